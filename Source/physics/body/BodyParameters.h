@@ -1,0 +1,39 @@
+#pragma once
+// The instrument body as seen from the string: a driving-point admittance at the bridge notch in the
+// bowing direction, written as a sum of modes (reference eq. 5.2):
+//     Y(omega) = sum_k i omega / ( m_k (omega_k^2 - omega^2 + i omega omega_k / Q_k) ).
+#include <complex>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rosin::physics
+{
+
+struct BodyMode
+{
+    double frequency = 0.0;     ///< Hz
+    double q = 30.0;            ///< quality factor
+    double effectiveMass = 1.0; ///< kg, modal mass at the bridge notch
+};
+
+struct BodyParameters
+{
+    std::string name = "rigid";  ///< "cello", "violin", "rigid", ...
+    std::vector<BodyMode> modes; ///< empty means a rigid bridge
+    bool rigid() const { return modes.empty(); }
+    /// The modal formula (5.2) evaluated at frequency f (Hz): bridge velocity per unit force, s/kg.
+    std::complex<double> admittance(double frequencyHz) const;
+};
+
+/// A rigid bridge (no body modes).
+BodyParameters rigidBody();
+/// Cello body: parametric low "signature" modes (reference §5.2) plus a statistical high-frequency set
+/// (reference §5.3), generated deterministically from `seed` up to maxFrequencyHz.
+BodyParameters celloBody(std::uint32_t seed = 1, double maxFrequencyHz = 10000.0);
+/// Violin body, built the same way with violin-scaled modes.
+BodyParameters violinBody(std::uint32_t seed = 1, double maxFrequencyHz = 12000.0);
+/// By name: "cello", "violin" or "rigid"; throws std::invalid_argument naming the expected values.
+BodyParameters bodyByName(const std::string& name);
+
+} // namespace rosin::physics

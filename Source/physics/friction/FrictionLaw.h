@@ -1,0 +1,51 @@
+#pragma once
+// The one interface every friction law of the seeds implements. A law is asked, once per sample, which
+// friction force and sliding speed are consistent with the string's "load line" (reference §1.3.1):
+//
+//     f = 2Z (dv - dvHistory),   dv = v - v_b,
+//
+// where dvHistory is the sliding speed the string would have if the friction force were zero this
+// sample, and 2Z = 1/y0 is the inverse of the string's instantaneous bow-point admittance.
+// The law returns the intersection with its own characteristic, advancing any internal state
+// (hysteresis flag, contact temperature) by one sample.
+
+namespace rosin::physics
+{
+
+/// What the junction knows before the friction force is chosen.
+struct JunctionInput
+{
+    double dvHistory = 0.0; ///< m/s, v_h - v_b: sliding speed with zero friction force this sample
+    double loadSlope = 1.0; ///< kg/s, 2Z = 1/y0 (> 0)
+    double bowForce = 0.0;  ///< N, normal bow force F_b (>= 0)
+};
+
+/// The friction law's answer for this sample.
+struct JunctionSolution
+{
+    double dv = 0.0;            ///< m/s, sliding speed v - v_b
+    double frictionForce = 0.0; ///< N, force of the bow on the string (opposes dv)
+    bool sticking = true;       ///< true when the string moves with the bow (dv == 0)
+};
+
+/// Base of every friction law. prepare() may allocate and calibrate (never on the audio thread);
+/// reset() clears dynamic state without allocating; solve() is real-time safe.
+class FrictionLaw
+{
+public:
+    virtual ~FrictionLaw() = default;
+    /// Off the audio thread: compute sample-rate constants, tables, calibrations.
+    virtual void prepare(double sampleRate) = 0;
+    /// Clear dynamic state (temperature to ambient, stuck). Never allocates.
+    virtual void reset() noexcept = 0;
+    /// One sample of the junction; advances the law's state.
+    virtual JunctionSolution solve(const JunctionInput& in) noexcept = 0;
+    /// Contact temperature rise above ambient, K (0 for laws without a temperature).
+    virtual double contactTemperature() const noexcept { return 0.0; }
+    /// Limiting static friction coefficient the law would give now (for analysis and tests).
+    virtual double staticCoefficient(double bowForce) const noexcept = 0;
+    /// Short stable identifier, e.g. "classical".
+    virtual const char* name() const noexcept = 0;
+};
+
+} // namespace rosin::physics

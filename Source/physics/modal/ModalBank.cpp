@@ -1,0 +1,90 @@
+#include "ModalBank.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace rosin::physics
+{
+
+void ModalBank::configure(const std::vector<ModeSpec>& modes, double sampleRate)
+{
+    if (!(sampleRate > 0.0))
+        throw std::invalid_argument("ModalBank: sample rate must be positive");
+    T_ = 1.0 / sampleRate;
+    const auto n = modes.size();
+    for (auto* v : {&pRe, &pIm, &dRe, &dIm, &wRe, &wIm})
+        v->assign(n, 0.0);
+    s.assign(n, {});
+    k1.assign(n, {});
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        if (!(modes[i].angularFrequency > 0.0 && modes[i].angularFrequency * T_ < M_PI))
+            throw std::invalid_argument("ModalBank: mode frequency outside (0, Nyquist)");
+        setPole(static_cast<int>(i), modes[i]);
+    }
+}
+
+void ModalBank::retune(const ModeSpec* modes, int count) noexcept
+{
+    for (int i = 0; i < count && i < size(); ++i)
+        setPole(i, modes[i]);
+}
+
+void ModalBank::setPole(int n, const ModeSpec& spec) noexcept
+{
+    const double omega = spec.angularFrequency;
+    const double sigma = 0.5 * spec.lossFactor * omega;
+    const double omegaD = omega * std::sqrt(std::max(1e-12, 1.0 - 0.25 * spec.lossFactor * spec.lossFactor));
+    const std::complex<double> sTrue(-sigma, omegaD);
+    const std::complex<double> p = std::exp(sTrue * T_);
+    const std::complex<double> sMoved = (2.0 / T_) * (p - 1.0) / (p + 1.0);
+    const std::complex<double> K1 = T_ / (2.0 - sMoved * T_);
+    const std::complex<double> d = (1.0 + p) * K1;
+    pRe[n] = p.real();
+    pIm[n] = p.imag();
+    dRe[n] = d.real();
+    dIm[n] = d.imag();
+    s[n] = sMoved;
+    k1[n] = K1;
+}
+
+void ModalBank::reset() noexcept
+{
+    for (auto* v : {&wRe, &wIm})
+        for (auto& x : *v)
+            x = 0.0;
+}
+
+std::complex<double> ModalBank::residue(int n, ModalOutput kind) const noexcept
+{
+    // Partial fractions of 1/((s - s1)(s - s1*)): residue r = 1/(s1 - s1*) at s1; velocity multiplies by s1,
+    // acceleration by s1^2 (plus a unit direct term).
+    const std::complex<double> s1 = s[n];
+    const std::complex<double> r = 1.0 / (s1 - std::conj(s1));
+    switch (kind)
+    {
+    case ModalOutput::Displacement:
+        return r;
+    case ModalOutput::Velocity:
+        return r * s1;
+    case ModalOutput::Acceleration:
+        return r * s1 * s1;
+    }
+    return r;
+}
+
+double ModalBank::direct(int n, ModalOutput kind) const noexcept
+{
+    const double d = 2.0 * (residue(n, kind) * k1[n]).real();
+    return kind == ModalOutput::Acceleration ? d + 1.0 : d;
+}
+
+double ModalBank::modalStiffness(int n) const noexcept { return std::norm(s[n]); }
+
+double ModalBank::value(int n, ModalOutput kind, double x) const noexcept
+{
+    const std::complex<double> w(wRe[n], wIm[n]);
+    return 2.0 * (residue(n, kind) * w).real() + direct(n, kind) * x;
+}
+
+} // namespace rosin::physics

@@ -1,0 +1,104 @@
+#include "ModalKernels.h"
+
+// Function multi-versioning: GCC and Clang on x86-64 build one clone per listed level and choose at load time.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(ROSIN_NO_MULTIVERSION)
+#define ROSIN_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#else
+#define ROSIN_VECTOR_CLONES
+#endif
+
+namespace rosin::physics
+{
+
+ROSIN_VECTOR_CLONES
+TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const double* gainA, double a, const double* gainB, double b,
+                                   const OutputWeights& o1, const OutputWeights& o2) noexcept
+{
+    const int n = bank.size();
+    double* __restrict wr = bank.wRe.data();
+    double* __restrict wi = bank.wIm.data();
+    const double* __restrict pr = bank.pRe.data();
+    const double* __restrict pi = bank.pIm.data();
+    const double* __restrict dr = bank.dRe.data();
+    const double* __restrict di = bank.dIm.data();
+    const double* __restrict o1r = o1.re.data();
+    const double* __restrict o1i = o1.im.data();
+    const double* __restrict o2r = o2.re.data();
+    const double* __restrict o2i = o2.im.data();
+    double s1 = 0.0, s2 = 0.0;
+#pragma omp simd reduction(+ : s1, s2)
+    for (int k = 0; k < n; ++k)
+    {
+        const double x = gainA[k] * a + gainB[k] * b;
+        const double nr = pr[k] * wr[k] - pi[k] * wi[k] + dr[k] * x;
+        const double ni = pr[k] * wi[k] + pi[k] * wr[k] + di[k] * x;
+        wr[k] = nr;
+        wi[k] = ni;
+        s1 += o1r[k] * nr - o1i[k] * ni;
+        s2 += o2r[k] * nr - o2i[k] * ni;
+    }
+    return {s1, s2};
+}
+
+ROSIN_VECTOR_CLONES
+double advanceOneInputOneOutput(ModalBank& bank, const double* gain, double a, const OutputWeights& o1) noexcept
+{
+    const int n = bank.size();
+    double* __restrict wr = bank.wRe.data();
+    double* __restrict wi = bank.wIm.data();
+    const double* __restrict pr = bank.pRe.data();
+    const double* __restrict pi = bank.pIm.data();
+    const double* __restrict dr = bank.dRe.data();
+    const double* __restrict di = bank.dIm.data();
+    const double* __restrict o1r = o1.re.data();
+    const double* __restrict o1i = o1.im.data();
+    double s1 = 0.0;
+#pragma omp simd reduction(+ : s1)
+    for (int k = 0; k < n; ++k)
+    {
+        const double x = gain[k] * a;
+        const double nr = pr[k] * wr[k] - pi[k] * wi[k] + dr[k] * x;
+        const double ni = pr[k] * wi[k] + pi[k] * wr[k] + di[k] * x;
+        wr[k] = nr;
+        wi[k] = ni;
+        s1 += o1r[k] * nr - o1i[k] * ni;
+    }
+    return s1;
+}
+
+ROSIN_VECTOR_CLONES
+ThreeSums advanceOneInputThreeOutputs(ModalBank& bank, const double* gain, double a, const OutputWeights& o1,
+                                      const OutputWeights& o2, const OutputWeights& o3) noexcept
+{
+    const int n = bank.size();
+    double* __restrict wr = bank.wRe.data();
+    double* __restrict wi = bank.wIm.data();
+    const double* __restrict pr = bank.pRe.data();
+    const double* __restrict pi = bank.pIm.data();
+    const double* __restrict dr = bank.dRe.data();
+    const double* __restrict di = bank.dIm.data();
+    double s1 = 0.0, s2 = 0.0, s3 = 0.0;
+#pragma omp simd reduction(+ : s1, s2, s3)
+    for (int k = 0; k < n; ++k)
+    {
+        const double x = gain[k] * a;
+        const double nr = pr[k] * wr[k] - pi[k] * wi[k] + dr[k] * x;
+        const double ni = pr[k] * wi[k] + pi[k] * wr[k] + di[k] * x;
+        wr[k] = nr;
+        wi[k] = ni;
+        s1 += o1.re[k] * nr - o1.im[k] * ni;
+        s2 += o2.re[k] * nr - o2.im[k] * ni;
+        s3 += o3.re[k] * nr - o3.im[k] * ni;
+    }
+    return {s1, s2, s3};
+}
+
+double sumOutput(const ModalBank& bank, const OutputWeights& o) noexcept
+{
+    double s = 0.0;
+    for (int k = 0; k < bank.size(); ++k)
+        s += o.re[k] * bank.wRe[k] - o.im[k] * bank.wIm[k];
+    return s;
+}
+
+} // namespace rosin::physics

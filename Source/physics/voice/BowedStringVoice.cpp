@@ -1,0 +1,355 @@
+#include "BowedStringVoice.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "../modal/ModalKernels.h"
+
+namespace rosin::physics
+{
+
+namespace
+{
+constexpr double pi = std::numbers::pi;
+// Parameter changes of beta and finger position are applied at most this often (samples): recomputing the
+// modal weights costs one sin() per mode, recomputing poles one exp() per mode.
+constexpr int kControlInterval = 16;
+} // namespace
+
+/// Everything per-sample lives here; see BowedStringVoice.h for the formulation.
+struct BowedStringVoice::Impl
+{
+    // String as currently vibrating.
+    StringParameters string;
+    double openLength = 0.69, length = 0.69, beta = 0.1, fingerRatio = 1.0;
+    bool stopped = false, torsionOn = true;
+    double T = 1.0 / 48000.0, modeLimit = 0.0; // rad/s
+
+    ModalBank trans, tors, body;
+    std::vector<ModeSpec> transSpecs, torsSpecs;
+    std::vector<double> transActive, torsActive; // 1 for modes below the frequency limit, else 0
+    std::vector<double> aN, bN;                  // string inputs x_n = aN f + bN (-u'')
+    std::vector<double> torsGain, bodyGain;
+    OutputWeights transVel, transAcc, torsVel, bodyU, bodyUd, bodyUdd;
+
+    // Direct (instantaneous) coefficients of the coupled bow/bridge solve.
+    double Bv = 0, U0 = 0, U1 = 0, U2 = 0, M3 = 0, D = 1, kappa = 0, y0 = 1;
+    // Histories: outputs of the state before the current input.
+    double Sv = 0, Sa = 0, Tv = 0, uh = 0, udh = 0, uddh = 0;
+    // Last step's inputs (energy and displacement inspection).
+    double lastF = 0, lastBridge = 0, lastUdd = 0;
+    long sampleCounter = 0;
+
+    void buildModes(const VoiceConfig& cfg, double fs);
+    void computeTransSpecs();
+    void computeTorsSpecs();
+    void updateWeights();
+    void clearState();
+    double energy() const;
+};
+
+void BowedStringVoice::Impl::computeTransSpecs()
+{
+    for (std::size_t i = 0; i < transSpecs.size(); ++i)
+    {
+        const int n = static_cast<int>(i) + 1;
+        double omega = string.modeAngularFrequency(n, length);
+        transActive[i] = omega < modeLimit ? 1.0 : 0.0;
+        omega = std::min(omega, modeLimit); // inactive modes are parked below the limit with zero weight
+        transSpecs[i] = {omega, string.lossFactor(n, length, stopped)};
+    }
+}
+
+void BowedStringVoice::Impl::computeTorsSpecs()
+{
+    for (std::size_t i = 0; i < torsSpecs.size(); ++i)
+    {
+        const int n = static_cast<int>(i) + 1;
+        double omega = n * pi * string.torsionalWaveSpeed / length;
+        torsActive[i] = omega < modeLimit ? 1.0 : 0.0;
+        torsSpecs[i] = {std::min(omega, modeLimit), 1.0 / string.torsionalQ};
+    }
+}
+
+void BowedStringVoice::Impl::buildModes(const VoiceConfig& cfg, double fs)
+{
+    T = 1.0 / fs;
+    modeLimit = 2.0 * pi * cfg.maxModeFrequencyRatio * fs;
+    int nTrans = 0;
+    while (nTrans < cfg.maxTransverseModes && string.modeAngularFrequency(nTrans + 1, openLength) < modeLimit)
+        ++nTrans;
+    int nTors = 0;
+    if (cfg.torsion)
+        while (nTors < cfg.maxTorsionalModes && (nTors + 1) * pi * string.torsionalWaveSpeed / openLength < modeLimit)
+            ++nTors;
+    transSpecs.assign(nTrans, {});
+    transActive.assign(nTrans, 1.0);
+    torsSpecs.assign(nTors, {});
+    torsActive.assign(nTors, 1.0);
+    computeTransSpecs();
+    computeTorsSpecs();
+    trans.configure(transSpecs, fs);
+    tors.configure(torsSpecs, fs);
+
+    std::vector<ModeSpec> bodySpecs;
+    bodyGain.clear();
+    for (const auto& mode : cfg.body.modes)
+    {
+        const double omega = 2.0 * pi * mode.frequency;
+        if (omega >= modeLimit)
+            continue;
+        bodySpecs.push_back({omega, 1.0 / mode.q});
+        bodyGain.push_back(1.0 / mode.effectiveMass);
+    }
+    body.configure(bodySpecs, fs);
+    aN.assign(nTrans, 0.0);
+    bN.assign(nTrans, 0.0);
+    torsGain.assign(nTors, 0.0);
+    transVel.assign(nTrans);
+    transAcc.assign(nTrans);
+    torsVel.assign(nTors);
+    for (auto* o : {&bodyU, &bodyUd, &bodyUdd})
+        o->assign(body.size());
+    for (int j = 0; j < body.size(); ++j)
+    {
+        const auto rd = 2.0 * body.residue(j, ModalOutput::Displacement);
+        const auto rv = 2.0 * body.residue(j, ModalOutput::Velocity);
+        const auto ra = 2.0 * body.residue(j, ModalOutput::Acceleration);
+        bodyU.re[j] = rd.real(), bodyU.im[j] = rd.imag();
+        bodyUd.re[j] = rv.real(), bodyUd.im[j] = rv.imag();
+        bodyUdd.re[j] = ra.real(), bodyUdd.im[j] = ra.imag();
+    }
+}
+
+// Mode weights for the current beta and length, and the direct coefficients of the per-sample solve.
+void BowedStringVoice::Impl::updateWeights()
+{
+    const double m = string.massPerLength, P = string.tension, L = length;
+    const double mL = m * L;
+    double A1 = 0, B1 = 0, Ya = 0;
+    Bv = 0;
+    for (int i = 0; i < trans.size(); ++i)
+    {
+        const int n = i + 1;
+        const double phi = std::sin(n * pi * beta) * transActive[i];
+        const double c = mL / (n * pi) * transActive[i]; // bridge-force weight of q''_n (Lagrangian coupling)
+        aN[i] = 2.0 * phi / mL;                          // bow force -> mode n
+        bN[i] = 2.0 / (n * pi) * transActive[i];         // bridge acceleration -> mode n (times -u'')
+        const auto rv = 2.0 * phi * trans.residue(i, ModalOutput::Velocity);
+        const auto ra = 2.0 * c * trans.residue(i, ModalOutput::Acceleration);
+        transVel.re[i] = rv.real(), transVel.im[i] = rv.imag();
+        transAcc.re[i] = ra.real(), transAcc.im[i] = ra.imag();
+        const double V = trans.direct(i, ModalOutput::Velocity);
+        const double E = trans.direct(i, ModalOutput::Acceleration);
+        A1 += c * E * aN[i];
+        B1 += c * E * bN[i];
+        Ya += phi * V * aN[i];
+        Bv += phi * V * bN[i];
+    }
+    // Torsion: a second "string" of tension Zt ct and mass Zt/ct per length, referred to the surface.
+    const double mt = string.torsionalImpedance / string.torsionalWaveSpeed;
+    for (int i = 0; i < tors.size(); ++i)
+    {
+        const double phi = std::sin((i + 1) * pi * beta) * torsActive[i];
+        torsGain[i] = 2.0 * phi / (mt * L);
+        const auto rv = 2.0 * phi * tors.residue(i, ModalOutput::Velocity);
+        torsVel.re[i] = rv.real(), torsVel.im[i] = rv.imag();
+        Ya += phi * tors.direct(i, ModalOutput::Velocity) * torsGain[i];
+    }
+    U0 = U1 = U2 = 0;
+    for (int j = 0; j < body.size(); ++j)
+    {
+        U0 += body.direct(j, ModalOutput::Displacement) * bodyGain[j];
+        U1 += body.direct(j, ModalOutput::Velocity) * bodyGain[j];
+        U2 += body.direct(j, ModalOutput::Acceleration) * bodyGain[j];
+    }
+    // Bridge force F = (1-beta) f - (P/L) u - (mL/3) u'' - sum_n c_n q''_n, with every term = history + direct.
+    M3 = mL / 3.0 - B1;
+    D = 1.0 + (P / L) * U0 + M3 * U2;
+    kappa = (1.0 - beta - A1) / D;
+    y0 = Ya - Bv * U2 * kappa + (1.0 - beta) * U1 * kappa;
+}
+
+void BowedStringVoice::Impl::clearState()
+{
+    trans.reset();
+    tors.reset();
+    body.reset();
+    Sv = Sa = Tv = uh = udh = uddh = 0;
+    lastF = lastBridge = lastUdd = 0;
+}
+
+BowedStringVoice::BowedStringVoice() : impl_(std::make_unique<Impl>()) {}
+BowedStringVoice::~BowedStringVoice() = default;
+
+void BowedStringVoice::prepare(const VoiceConfig& config, std::unique_ptr<FrictionLaw> friction, double sampleRate)
+{
+    if (!friction)
+        throw std::invalid_argument("BowedStringVoice::prepare: a friction law is required");
+    if (!(sampleRate >= 8000.0 && sampleRate <= 384000.0))
+        throw std::invalid_argument("BowedStringVoice::prepare: sample rate must be 8000..384000 Hz");
+    config_ = config;
+    sampleRate_ = sampleRate;
+    auto& s = *impl_;
+    s.string = config.string;
+    if (!config.bendingStiffness)
+        s.string.bendingStiffness = 0.0;
+    s.openLength = s.length = config.string.length;
+    s.beta = 0.1;
+    s.fingerRatio = 1.0;
+    s.stopped = false;
+    s.buildModes(config, sampleRate);
+    s.updateWeights();
+    friction_ = std::move(friction);
+    friction_->prepare(sampleRate);
+    reset();
+}
+
+void BowedStringVoice::reset() noexcept
+{
+    impl_->clearState();
+    impl_->sampleCounter = 0;
+    if (friction_)
+        friction_->reset();
+    recovered_ = false;
+}
+
+VoiceSample BowedStringVoice::step(const BowInput& in) noexcept
+{
+    auto& s = *impl_;
+    recovered_ = false;
+    const double beta = std::clamp(in.beta, 0.01, 0.5);
+    const double finger = std::clamp(in.fingerRatio, 0.1, 1.0);
+    const bool controlTick = (s.sampleCounter++ % kControlInterval) == 0;
+    if (controlTick && finger != s.fingerRatio)
+    {
+        s.fingerRatio = finger;
+        s.length = s.openLength * finger;
+        s.stopped = finger < 0.999;
+        s.computeTransSpecs();
+        s.computeTorsSpecs();
+        s.trans.retune(s.transSpecs.data(), s.trans.size());
+        s.tors.retune(s.torsSpecs.data(), s.tors.size());
+        s.beta = beta;
+        s.updateWeights();
+    }
+    else if (controlTick && beta != s.beta)
+    {
+        s.beta = beta;
+        s.updateWeights();
+    }
+
+    const double P = s.string.tension, L = s.length;
+    const double Fh = (-(P / L) * s.uh - s.M3 * s.uddh - s.Sa) / s.D;
+    const double vh = s.Sv + s.Tv - s.Bv * (s.uddh + s.U2 * Fh) + (1.0 - s.beta) * (s.udh + s.U1 * Fh);
+    const double vb = in.bowVelocity;
+    const JunctionSolution sol = friction_->solve({vh - vb, 1.0 / s.y0, std::max(0.0, in.bowForce)});
+    const double f = sol.frictionForce;
+    const double F = Fh + s.kappa * f;
+    const double udd = s.uddh + s.U2 * F;
+
+    const TwoSums st = advanceTwoInputsTwoOutputs(s.trans, s.aN.data(), f, s.bN.data(), -udd, s.transVel, s.transAcc);
+    s.Sv = st.first;
+    s.Sa = st.second;
+    s.Tv = s.tors.size() ? advanceOneInputOneOutput(s.tors, s.torsGain.data(), f, s.torsVel) : 0.0;
+    if (s.body.size())
+    {
+        const ThreeSums sb = advanceOneInputThreeOutputs(s.body, s.bodyGain.data(), F, s.bodyU, s.bodyUd, s.bodyUdd);
+        s.uh = sb.first, s.udh = sb.second, s.uddh = sb.third;
+    }
+    s.lastF = f, s.lastBridge = F, s.lastUdd = udd;
+
+    VoiceSample out{F, vb + sol.dv, f, vb, friction_->contactTemperature(), sol.sticking};
+    // A runaway (non-finite or absurd) state is reset rather than heard: nothing physical reaches 1e4 N here.
+    if (!std::isfinite(F) || !std::isfinite(s.Sv) || std::abs(F) > 1e4)
+    {
+        reset();
+        recovered_ = true;
+        out = VoiceSample{};
+        out.bowVelocity = vb;
+    }
+    return out;
+}
+
+int BowedStringVoice::transverseModeCount() const noexcept { return impl_->trans.size(); }
+int BowedStringVoice::torsionalModeCount() const noexcept { return impl_->tors.size(); }
+int BowedStringVoice::bodyModeCount() const noexcept { return impl_->body.size(); }
+double BowedStringVoice::instantaneousAdmittance() const noexcept { return impl_->y0; }
+
+std::vector<double> BowedStringVoice::transverseModeFrequencies() const
+{
+    std::vector<double> f;
+    for (const auto& spec : impl_->transSpecs)
+        f.push_back(spec.angularFrequency / (2.0 * pi));
+    return f;
+}
+
+namespace
+{
+// State of mode n at the last step k from the stored history w~[k+1] and the input x[k]:
+// w[k] = (w~[k+1] - K1 x[k]) / p.
+std::complex<double> stateAtLastStep(const ModalBank& b, int n, double x)
+{
+    const std::complex<double> p(b.pRe[n], b.pIm[n]);
+    return (std::complex<double>(b.wRe[n], b.wIm[n]) - b.k1[n] * x) / p;
+}
+double modeOutput(const ModalBank& b, int n, ModalOutput kind, std::complex<double> w)
+{
+    return 2.0 * (b.residue(n, kind) * w).real();
+}
+} // namespace
+
+double BowedStringVoice::Impl::energy() const
+{
+    const double m = string.massPerLength, L = length, mL = m * L;
+    double u = 0, ud = 0, e = 0;
+    for (int j = 0; j < body.size(); ++j)
+    {
+        const auto w = stateAtLastStep(body, j, lastBridge * bodyGain[j]);
+        const double x = modeOutput(body, j, ModalOutput::Displacement, w);
+        const double v = modeOutput(body, j, ModalOutput::Velocity, w);
+        const double mass = 1.0 / bodyGain[j];
+        e += 0.5 * mass * (v * v + body.modalStiffness(j) * x * x);
+        u += x, ud += v;
+    }
+    double cross = 0;
+    for (int i = 0; i < trans.size(); ++i)
+    {
+        const auto w = stateAtLastStep(trans, i, aN[i] * lastF - bN[i] * lastUdd);
+        const double q = modeOutput(trans, i, ModalOutput::Displacement, w);
+        const double qd = modeOutput(trans, i, ModalOutput::Velocity, w);
+        e += 0.25 * mL * (qd * qd + trans.modalStiffness(i) * q * q);
+        cross += qd * bN[i];
+    }
+    // Kinetic cross term m u' sum q'_n L/(n pi), the quasi-static shape's own energy, and its tension energy.
+    e += 0.5 * mL * ud * cross + mL / 6.0 * ud * ud + string.tension * u * u / (2.0 * L);
+    const double mt = string.torsionalImpedance / string.torsionalWaveSpeed;
+    for (int i = 0; i < tors.size(); ++i)
+    {
+        const auto w = stateAtLastStep(tors, i, torsGain[i] * lastF);
+        const double q = modeOutput(tors, i, ModalOutput::Displacement, w);
+        const double qd = modeOutput(tors, i, ModalOutput::Velocity, w);
+        e += 0.25 * mt * L * (qd * qd + tors.modalStiffness(i) * q * q);
+    }
+    return e;
+}
+
+double BowedStringVoice::storedEnergy() const noexcept { return impl_->energy(); }
+
+double BowedStringVoice::bowPointDisplacement() const noexcept
+{
+    const auto& s = *impl_;
+    double y = 0, u = 0;
+    for (int j = 0; j < s.body.size(); ++j)
+        u += modeOutput(s.body, j, ModalOutput::Displacement, stateAtLastStep(s.body, j, s.lastBridge * s.bodyGain[j]));
+    for (int i = 0; i < s.trans.size(); ++i)
+    {
+        const auto w = stateAtLastStep(s.trans, i, s.aN[i] * s.lastF - s.bN[i] * s.lastUdd);
+        y += std::sin((i + 1) * pi * s.beta) * s.transActive[i] * modeOutput(s.trans, i, ModalOutput::Displacement, w);
+    }
+    return y + (1.0 - s.beta) * u;
+}
+
+} // namespace rosin::physics

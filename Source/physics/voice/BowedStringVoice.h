@@ -1,0 +1,85 @@
+#pragma once
+// One bowed string: transverse and torsional modes of a stiff string, a modal body at the bridge, and a
+// friction law at the bow, advanced one sample at a time.
+//
+// Formulation (reference §1, §4.4, §5.1, written out in docs/physics-implementation.md):
+//  * string displacement y(x,t) = u(t)(1 - x/L) + sum_n q_n(t) sin(n pi x/L), bridge at x = 0, u the
+//    bridge (body) displacement: the quasi-static term carries the moving bridge exactly;
+//  * every mode is a second-order oscillator discretised with the bilinear transform, with its continuous
+//    pole moved so that the digital pole is exactly exp(s T): mode frequencies and decay times are exact;
+//  * the bow point, the bridge and the body are coupled through one small linear solve per sample that
+//    leaves v = v_h + y0 f, so any friction law sees the classic load line f = (v - v_h)/y0.
+// Real-time contract: prepare() allocates; reset() and step() never allocate, lock or call the system.
+#include <memory>
+#include <vector>
+
+#include "../friction/FrictionLaw.h"
+#include "VoiceConfig.h"
+
+namespace rosin::physics
+{
+
+/// Per-sample bow input, already smoothed (see BowGesture), SI units.
+struct BowInput
+{
+    double bowForce = 0.0;    ///< F_b, N (>= 0)
+    double bowVelocity = 0.0; ///< v_b, m/s
+    double beta = 0.1;        ///< bow-bridge distance / vibrating length, 0.01..0.5
+    double fingerRatio = 1.0; ///< vibrating length / open length (1 = open string), 0.1..1
+};
+
+/// What one sample produced. Forces in N, velocities in m/s.
+struct VoiceSample
+{
+    double bridgeForce = 0.0;        ///< transverse force of the string on the bridge (the audio output)
+    double bowPointVelocity = 0.0;   ///< string surface velocity at the bow (transverse + torsional)
+    double frictionForce = 0.0;      ///< force of the bow on the string
+    double bowVelocity = 0.0;        ///< v_b used this sample
+    double contactTemperature = 0.0; ///< K above ambient (0 for non-thermal laws)
+    bool sticking = true;
+};
+
+class BowedStringVoice
+{
+public:
+    BowedStringVoice();
+    ~BowedStringVoice();
+    BowedStringVoice(const BowedStringVoice&) = delete;
+    BowedStringVoice& operator=(const BowedStringVoice&) = delete;
+
+    /// Off the audio thread. Takes ownership of the friction law and prepares it.
+    void prepare(const VoiceConfig& config, std::unique_ptr<FrictionLaw> friction, double sampleRate);
+    /// String, body and friction state back to rest. Real-time safe.
+    void reset() noexcept;
+    /// Advance one sample. Real-time safe.
+    VoiceSample step(const BowInput& in) noexcept;
+
+    // --- Inspection (tests, analysis, UI) ---
+    double sampleRate() const noexcept { return sampleRate_; }
+    int transverseModeCount() const noexcept;
+    int torsionalModeCount() const noexcept;
+    int bodyModeCount() const noexcept;
+    /// Transverse mode frequencies (Hz) of the current vibrating length.
+    std::vector<double> transverseModeFrequencies() const;
+    /// Instantaneous bow-point admittance y0 (s/kg) at the current bow position: v = v_h + y0 f.
+    double instantaneousAdmittance() const noexcept;
+    /// Stored mechanical energy of string (transverse + torsional) and body, J, at the last step.
+    double storedEnergy() const noexcept;
+    /// Transverse string displacement at the bow point at the last step, m (excludes torsion).
+    double bowPointDisplacement() const noexcept;
+    const FrictionLaw& friction() const noexcept { return *friction_; }
+    const VoiceConfig& config() const noexcept { return config_; }
+
+    /// True if the last step produced a non-finite or runaway state and the voice reset itself.
+    bool recoveredFromRunaway() const noexcept { return recovered_; }
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+    std::unique_ptr<FrictionLaw> friction_;
+    VoiceConfig config_;
+    double sampleRate_ = 48000.0;
+    bool recovered_ = false;
+};
+
+} // namespace rosin::physics
