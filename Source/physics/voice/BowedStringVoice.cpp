@@ -31,6 +31,7 @@ struct BowedStringVoice::Impl
     std::vector<ModeSpec> transSpecs, torsSpecs;
     std::vector<double> transActive, torsActive; // 1 for modes below the frequency limit, else 0
     std::vector<double> aN, bN;                  // string inputs x_n = aN f + bN (-u'')
+    std::vector<double> transPhi;                // bow coupling of each transverse mode (corrected shape)
     std::vector<double> torsGain, bodyGain;
     OutputWeights transVel, transAcc, torsVel, bodyU, bodyUd, bodyUdd;
 
@@ -105,6 +106,7 @@ void BowedStringVoice::Impl::buildModes(const VoiceConfig& cfg, double fs)
     }
     body.configure(bodySpecs, fs);
     aN.assign(nTrans, 0.0);
+    transPhi.assign(nTrans, 0.0);
     bN.assign(nTrans, 0.0);
     torsGain.assign(nTors, 0.0);
     transVel.assign(nTrans);
@@ -123,6 +125,20 @@ void BowedStringVoice::Impl::buildModes(const VoiceConfig& cfg, double fs)
     }
 }
 
+namespace
+{
+// The bilinear map makes a mode whose digital pole is exact behave, at low frequency, like a stiffer mode
+// (|s~|^2 > omega^2, up to 19x near the mode limit at 0.45 fs). Scaling the bow's coupling to mode n by
+// sqrt(|s~|^2 / omega^2) on both the force input and the velocity output restores each mode's static
+// compliance at the bow (the quasi-static pre-slip rise of seed 002 eqs. 3-5) while keeping the bow port
+// reciprocal, so the coupled system stays passive.
+double staticCorrection(const ModalBank& bank, const std::vector<ModeSpec>& specs, int i)
+{
+    const double omega = specs[i].angularFrequency;
+    return std::sqrt(bank.modalStiffness(i) / (omega * omega));
+}
+} // namespace
+
 // Mode weights for the current beta and length, and the direct coefficients of the per-sample solve.
 void BowedStringVoice::Impl::updateWeights()
 {
@@ -133,10 +149,11 @@ void BowedStringVoice::Impl::updateWeights()
     for (int i = 0; i < trans.size(); ++i)
     {
         const int n = i + 1;
-        const double phi = std::sin(n * pi * beta) * transActive[i];
+        const double phi = std::sin(n * pi * beta) * transActive[i] * staticCorrection(trans, transSpecs, i);
         const double c = mL / (n * pi) * transActive[i]; // bridge-force weight of q''_n (Lagrangian coupling)
         aN[i] = 2.0 * phi / mL;                          // bow force -> mode n
         bN[i] = 2.0 / (n * pi) * transActive[i];         // bridge acceleration -> mode n (times -u'')
+        transPhi[i] = phi;
         const auto rv = 2.0 * phi * trans.residue(i, ModalOutput::Velocity);
         const auto ra = 2.0 * c * trans.residue(i, ModalOutput::Acceleration);
         transVel.re[i] = rv.real(), transVel.im[i] = rv.imag();
@@ -152,7 +169,7 @@ void BowedStringVoice::Impl::updateWeights()
     const double mt = string.torsionalImpedance / string.torsionalWaveSpeed;
     for (int i = 0; i < tors.size(); ++i)
     {
-        const double phi = std::sin((i + 1) * pi * beta) * torsActive[i];
+        const double phi = std::sin((i + 1) * pi * beta) * torsActive[i] * staticCorrection(tors, torsSpecs, i);
         torsGain[i] = 2.0 * phi / (mt * L);
         const auto rv = 2.0 * phi * tors.residue(i, ModalOutput::Velocity);
         torsVel.re[i] = rv.real(), torsVel.im[i] = rv.imag();
@@ -347,7 +364,7 @@ double BowedStringVoice::bowPointDisplacement() const noexcept
     for (int i = 0; i < s.trans.size(); ++i)
     {
         const auto w = stateAtLastStep(s.trans, i, s.aN[i] * s.lastF - s.bN[i] * s.lastUdd);
-        y += std::sin((i + 1) * pi * s.beta) * s.transActive[i] * modeOutput(s.trans, i, ModalOutput::Displacement, w);
+        y += s.transPhi[i] * modeOutput(s.trans, i, ModalOutput::Displacement, w);
     }
     return y + (1.0 - s.beta) * u;
 }
