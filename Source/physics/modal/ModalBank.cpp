@@ -15,7 +15,6 @@ void ModalBank::configure(const std::vector<ModeSpec>& modes, double sampleRate)
     for (auto* v : {&pRe, &pIm, &dRe, &dIm, &wRe, &wIm})
         v->assign(n, 0.0);
     s.assign(n, {});
-    k1.assign(n, {});
     for (std::size_t i = 0; i < n; ++i)
     {
         if (!(modes[i].angularFrequency > 0.0 && modes[i].angularFrequency * T_ < M_PI))
@@ -35,17 +34,13 @@ void ModalBank::setPole(int n, const ModeSpec& spec) noexcept
     const double omega = spec.angularFrequency;
     const double sigma = 0.5 * spec.lossFactor * omega;
     const double omegaD = omega * std::sqrt(std::max(1e-12, 1.0 - 0.25 * spec.lossFactor * spec.lossFactor));
-    const std::complex<double> sTrue(-sigma, omegaD);
-    const std::complex<double> p = std::exp(sTrue * T_);
-    const std::complex<double> sMoved = (2.0 / T_) * (p - 1.0) / (p + 1.0);
-    const std::complex<double> K1 = T_ / (2.0 - sMoved * T_);
-    const std::complex<double> d = (1.0 + p) * K1;
+    const std::complex<double> pole(-sigma, omegaD);
+    const std::complex<double> p = std::exp(pole * T_);
     pRe[n] = p.real();
     pIm[n] = p.imag();
-    dRe[n] = d.real();
-    dIm[n] = d.imag();
-    s[n] = sMoved;
-    k1[n] = K1;
+    dRe[n] = p.real() * T_;
+    dIm[n] = p.imag() * T_;
+    s[n] = pole;
 }
 
 void ModalBank::reset() noexcept
@@ -75,11 +70,21 @@ std::complex<double> ModalBank::residue(int n, ModalOutput kind) const noexcept
 
 double ModalBank::direct(int n, ModalOutput kind) const noexcept
 {
-    const double d = 2.0 * (residue(n, kind) * k1[n]).real();
-    return kind == ModalOutput::Acceleration ? d + 1.0 : d;
+    // H(1) = 2 Re(rho p T / (1 - p)) + D must equal the continuous DC gain.
+    const std::complex<double> p(pRe[n], pIm[n]);
+    const double dcTrue = kind == ModalOutput::Displacement ? 1.0 / std::norm(s[n]) : 0.0;
+    return dcTrue - 2.0 * (residue(n, kind) * p * T_ / (1.0 - p)).real();
 }
 
 double ModalBank::modalStiffness(int n) const noexcept { return std::norm(s[n]); }
+
+double ModalBank::outputAtLastStep(int n, ModalOutput kind, double x) const noexcept
+{
+    // w~[k+1] = p (w~[k] + T x[k])  =>  w~[k] = w~[k+1] / p - T x[k].
+    const std::complex<double> p(pRe[n], pIm[n]);
+    const std::complex<double> w = std::complex<double>(wRe[n], wIm[n]) / p - T_ * x;
+    return 2.0 * (residue(n, kind) * w).real() + direct(n, kind) * x;
+}
 
 double ModalBank::value(int n, ModalOutput kind, double x) const noexcept
 {

@@ -1,14 +1,20 @@
 #pragma once
-// A bank of independent damped modes  q'' + 2 sigma q' + omega^2 q = x(t)  (unit input), discretised with
-// the bilinear (trapezoidal) rule. Before discretising, each continuous pole is moved to
-//     s~ = (2/T) (p - 1) / (p + 1),   p = exp(s T),
-// so that the digital pole is exactly exp(s T): every mode rings at its true frequency and decays at its true
-// rate at any sample rate, while the scheme keeps the trapezoidal rule's direct feedthrough (needed by the
-// bow junction) and its passivity (it is the trapezoidal rule applied to a slightly stiffer passive system).
+// A bank of independent damped modes  q'' + 2 sigma q' + omega^2 q = x(t)  (unit input), discretised by
+// impulse invariance: the input is a train of impulses of area T x[k], each mode's state advances exactly
+// (digital pole p = exp(s T), so frequencies and decay times are exact at any sample rate), and an output
+// at sample k is the average of its values just before and just after the impulse k (the trapezoidal
+// rule applied to the convolution integral, as in Green's-function bowed-string simulations).
 //
-// State: one complex number per mode, w~[k] = p w~[k-1] + (1 + p) K1 x[k-1], which holds everything known
-// before the current input. Any output y = Re(rho w) is then  history + direct * x[k]  (ModalBank::output*).
-// Arrays are stored split (re/im) so the per-sample loops vectorise.
+// Why not the bilinear transform: it puts a zero at z = -1 in every mode, so the summed bow-point
+// admittance vanishes at Nyquist and a sticking contact (a velocity constraint) lets the friction force
+// alternate sample by sample without decay. Impulse invariance keeps a non-zero admittance at Nyquist.
+//
+// State: one complex number per mode, w~[k] = p (w~[k-1] + T x[k-1]), everything known before the current
+// input. An output is then y[k] = 2 Re(rho w~[k]) + D x[k]. The direct term D is about half the impulse
+// (T Re(rho)) and is set exactly so that every output has its continuous DC gain: 1/omega^2 for
+// displacement, 0 for velocity and acceleration. Without that, sampling a damped mode's impulse response
+// leaves a small DC velocity gain, and a string held by a sticking bow creeps (by 2 % in 30 ms with the
+// cello D's torsional Q of 45). Arrays are split (re/im) to vectorise.
 #include <complex>
 #include <vector>
 
@@ -44,17 +50,18 @@ public:
     std::complex<double> residue(int n, ModalOutput kind) const noexcept;
     /// Direct feedthrough of mode n's output of that kind on the current input x[k].
     double direct(int n, ModalOutput kind) const noexcept;
-    /// "Stiffness" |s~|^2 of mode n (the discretised mode's omega^2), 1/s^2.
+    /// omega^2 of mode n (the continuous mode's stiffness per unit modal mass), 1/s^2.
     double modalStiffness(int n) const noexcept;
+    /// Output of mode n at the last advanced step k, given the input x[k] used then.
+    double outputAtLastStep(int n, ModalOutput kind, double x) const noexcept;
     /// Current value of one output of mode n, given the current input x (after history): for inspection.
     double value(int n, ModalOutput kind, double x) const noexcept;
 
     // Split arrays (public for the kernels; treat as read-only outside ModalKernels).
     std::vector<double> pRe, pIm; ///< digital pole p
-    std::vector<double> dRe, dIm; ///< state input gain (1 + p) K1
+    std::vector<double> dRe, dIm; ///< state input gain p T
     std::vector<double> wRe, wIm; ///< state w~
-    std::vector<std::complex<double>> s;  ///< moved continuous pole s~ (upper half plane)
-    std::vector<std::complex<double>> k1; ///< K1 = T / (2 - s~ T)
+    std::vector<std::complex<double>> s; ///< continuous pole (upper half plane)
 
 private:
     double T_ = 1.0 / 48000.0;

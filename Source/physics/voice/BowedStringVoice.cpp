@@ -127,15 +127,15 @@ void BowedStringVoice::Impl::buildModes(const VoiceConfig& cfg, double fs)
 
 namespace
 {
-// The bilinear map makes a mode whose digital pole is exact behave, at low frequency, like a stiffer mode
-// (|s~|^2 > omega^2, up to 19x near the mode limit at 0.45 fs). Scaling the bow's coupling to mode n by
-// sqrt(|s~|^2 / omega^2) on both the force input and the velocity output restores each mode's static
-// compliance at the bow (the quasi-static pre-slip rise of seed 002 eqs. 3-5) while keeping the bow port
-// reciprocal, so the coupled system stays passive.
-double staticCorrection(const ModalBank& bank, const std::vector<ModeSpec>& specs, int i)
+// Under a velocity constraint (a sticking bow) a sampled mode yields as if its compliance were
+// (x / sin x)^2 / omega^2, x = omega T / 2, not 1/omega^2: twice too soft at the 0.45 fs mode limit. Scaling
+// the bow's coupling to mode n by sin(x)/x on both the force input and the velocity output restores each
+// mode's static compliance at the bow (the quasi-static pre-slip rise of seed 002 eqs. 3-5), keeps the bow
+// port reciprocal, and tames the top modes' share of the bow admittance.
+double staticCorrection(const ModalBank& bank, int i, double T)
 {
-    const double omega = specs[i].angularFrequency;
-    return std::sqrt(bank.modalStiffness(i) / (omega * omega));
+    const double x = 0.5 * bank.s[i].imag() * T;
+    return std::sin(x) / x;
 }
 } // namespace
 
@@ -149,7 +149,7 @@ void BowedStringVoice::Impl::updateWeights()
     for (int i = 0; i < trans.size(); ++i)
     {
         const int n = i + 1;
-        const double phi = std::sin(n * pi * beta) * transActive[i] * staticCorrection(trans, transSpecs, i);
+        const double phi = std::sin(n * pi * beta) * transActive[i] * staticCorrection(trans, i, T);
         const double c = mL / (n * pi) * transActive[i]; // bridge-force weight of q''_n (Lagrangian coupling)
         aN[i] = 2.0 * phi / mL;                          // bow force -> mode n
         bN[i] = 2.0 / (n * pi) * transActive[i];         // bridge acceleration -> mode n (times -u'')
@@ -169,7 +169,7 @@ void BowedStringVoice::Impl::updateWeights()
     const double mt = string.torsionalImpedance / string.torsionalWaveSpeed;
     for (int i = 0; i < tors.size(); ++i)
     {
-        const double phi = std::sin((i + 1) * pi * beta) * torsActive[i] * staticCorrection(tors, torsSpecs, i);
+        const double phi = std::sin((i + 1) * pi * beta) * torsActive[i] * staticCorrection(tors, i, T);
         torsGain[i] = 2.0 * phi / (mt * L);
         const auto rv = 2.0 * phi * tors.residue(i, ModalOutput::Velocity);
         torsVel.re[i] = rv.real(), torsVel.im[i] = rv.imag();
@@ -303,30 +303,15 @@ std::vector<double> BowedStringVoice::transverseModeFrequencies() const
     return f;
 }
 
-namespace
-{
-// State of mode n at the last step k from the stored history w~[k+1] and the input x[k]:
-// w[k] = (w~[k+1] - K1 x[k]) / p.
-std::complex<double> stateAtLastStep(const ModalBank& b, int n, double x)
-{
-    const std::complex<double> p(b.pRe[n], b.pIm[n]);
-    return (std::complex<double>(b.wRe[n], b.wIm[n]) - b.k1[n] * x) / p;
-}
-double modeOutput(const ModalBank& b, int n, ModalOutput kind, std::complex<double> w)
-{
-    return 2.0 * (b.residue(n, kind) * w).real();
-}
-} // namespace
-
 double BowedStringVoice::Impl::energy() const
 {
     const double m = string.massPerLength, L = length, mL = m * L;
     double u = 0, ud = 0, e = 0;
     for (int j = 0; j < body.size(); ++j)
     {
-        const auto w = stateAtLastStep(body, j, lastBridge * bodyGain[j]);
-        const double x = modeOutput(body, j, ModalOutput::Displacement, w);
-        const double v = modeOutput(body, j, ModalOutput::Velocity, w);
+        const double in = lastBridge * bodyGain[j];
+        const double x = body.outputAtLastStep(j, ModalOutput::Displacement, in);
+        const double v = body.outputAtLastStep(j, ModalOutput::Velocity, in);
         const double mass = 1.0 / bodyGain[j];
         e += 0.5 * mass * (v * v + body.modalStiffness(j) * x * x);
         u += x, ud += v;
@@ -334,9 +319,9 @@ double BowedStringVoice::Impl::energy() const
     double cross = 0;
     for (int i = 0; i < trans.size(); ++i)
     {
-        const auto w = stateAtLastStep(trans, i, aN[i] * lastF - bN[i] * lastUdd);
-        const double q = modeOutput(trans, i, ModalOutput::Displacement, w);
-        const double qd = modeOutput(trans, i, ModalOutput::Velocity, w);
+        const double in = aN[i] * lastF - bN[i] * lastUdd;
+        const double q = trans.outputAtLastStep(i, ModalOutput::Displacement, in);
+        const double qd = trans.outputAtLastStep(i, ModalOutput::Velocity, in);
         e += 0.25 * mL * (qd * qd + trans.modalStiffness(i) * q * q);
         cross += qd * bN[i];
     }
@@ -345,9 +330,9 @@ double BowedStringVoice::Impl::energy() const
     const double mt = string.torsionalImpedance / string.torsionalWaveSpeed;
     for (int i = 0; i < tors.size(); ++i)
     {
-        const auto w = stateAtLastStep(tors, i, torsGain[i] * lastF);
-        const double q = modeOutput(tors, i, ModalOutput::Displacement, w);
-        const double qd = modeOutput(tors, i, ModalOutput::Velocity, w);
+        const double in = torsGain[i] * lastF;
+        const double q = tors.outputAtLastStep(i, ModalOutput::Displacement, in);
+        const double qd = tors.outputAtLastStep(i, ModalOutput::Velocity, in);
         e += 0.25 * mt * L * (qd * qd + tors.modalStiffness(i) * q * q);
     }
     return e;
@@ -360,11 +345,10 @@ double BowedStringVoice::bowPointDisplacement() const noexcept
     const auto& s = *impl_;
     double y = 0, u = 0;
     for (int j = 0; j < s.body.size(); ++j)
-        u += modeOutput(s.body, j, ModalOutput::Displacement, stateAtLastStep(s.body, j, s.lastBridge * s.bodyGain[j]));
+        u += s.body.outputAtLastStep(j, ModalOutput::Displacement, s.lastBridge * s.bodyGain[j]);
     for (int i = 0; i < s.trans.size(); ++i)
     {
-        const auto w = stateAtLastStep(s.trans, i, s.aN[i] * s.lastF - s.bN[i] * s.lastUdd);
-        y += s.transPhi[i] * modeOutput(s.trans, i, ModalOutput::Displacement, w);
+        y += s.transPhi[i] * s.trans.outputAtLastStep(i, ModalOutput::Displacement, s.aN[i] * s.lastF - s.bN[i] * s.lastUdd);
     }
     return y + (1.0 - s.beta) * u;
 }

@@ -5,8 +5,8 @@
 // Formulation (reference §1, §4.4, §5.1, written out in docs/physics-implementation.md):
 //  * string displacement y(x,t) = u(t)(1 - x/L) + sum_n q_n(t) sin(n pi x/L), bridge at x = 0, u the
 //    bridge (body) displacement: the quasi-static term carries the moving bridge exactly;
-//  * every mode is a second-order oscillator discretised with the bilinear transform, with its continuous
-//    pole moved so that the digital pole is exactly exp(s T): mode frequencies and decay times are exact;
+//  * every mode is a second-order oscillator discretised by impulse invariance with a half-sample direct
+//    term (ModalBank.h): digital poles exp(s T), so mode frequencies and decay times are exact;
 //  * the bow point, the bridge and the body are coupled through one small linear solve per sample that
 //    leaves v = v_h + y0 f, so any friction law sees the classic load line f = (v - v_h)/y0.
 // Real-time contract: prepare() allocates; reset() and step() never allocate, lock or call the system.
