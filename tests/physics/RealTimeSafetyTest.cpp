@@ -1,0 +1,79 @@
+// Real-time safety: after prepare(), stepping a voice performs no heap allocation, whatever the friction
+// law and whatever the gesture does (beta and finger changes included). Global operator new is replaced in
+// this test binary to count allocations while a flag is set.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "physics/friction/CurveFrictionLaw.h"
+#include "physics/voice/BowedStringVoice.h"
+#include "support/TestLaws.h"
+
+namespace
+{
+std::atomic<bool> countingAllocations{false};
+std::atomic<long> allocationsWhileCounting{0};
+} // namespace
+
+void* operator new(std::size_t size)
+{
+    if (countingAllocations.load(std::memory_order_relaxed))
+        allocationsWhileCounting.fetch_add(1, std::memory_order_relaxed);
+    if (void* p = std::malloc(size ? size : 1))
+        return p;
+    throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace rosin::test
+{
+/// Counts allocations inside a scope.
+struct AllocationCounter
+{
+    AllocationCounter() { allocationsWhileCounting = 0, countingAllocations = true; }
+    ~AllocationCounter() { countingAllocations = false; }
+    long count() const { return allocationsWhileCounting.load(); }
+};
+
+/// Steps through a gesture that exercises every per-sample path: attack, slip, beta and finger glides.
+long allocationsDuringSteps(physics::BowedStringVoice& voice)
+{
+    AllocationCounter counter;
+    for (int k = 0; k < 20000; ++k)
+    {
+        const double t = k / 48000.0;
+        voice.step({0.5 + 0.4 * std::sin(7.0 * t), std::min(0.1, 0.5 * t), 0.08 + 0.05 * t, 1.0 - 0.3 * t});
+    }
+    return counter.count();
+}
+} // namespace rosin::test
+
+TEST(RealTimeSafety, CounterSeesAllocations)
+{
+    rosin::test::AllocationCounter counter;
+    auto* p = new int(3); // the counter must notice this, or the other tests prove nothing
+    asm volatile("" : : "r"(p) : "memory"); // keep the compiler from eliding the allocation
+    delete p;
+    EXPECT_EQ(counter.count(), 1);
+}
+
+TEST(RealTimeSafety, StepAllocatesNothingWithCurveLaws)
+{
+    using namespace rosin::physics;
+    VoiceConfig cfg;
+    cfg.string = stringFromCatalogue("cello-D3");
+    cfg.body = celloBody();
+    for (int law = 0; law < 2; ++law)
+    {
+        BowedStringVoice voice;
+        if (law == 0)
+            voice.prepare(cfg, std::make_unique<ClassicalFrictionLaw>(ClassicalCurve{}, "classical"), 48000.0);
+        else
+            voice.prepare(cfg, std::make_unique<ReconstructedFrictionLaw>(ReconstructedCurve{}, "reconstructed"),
+                          48000.0);
+        EXPECT_EQ(rosin::test::allocationsDuringSteps(voice), 0) << "law " << law;
+    }
+}
