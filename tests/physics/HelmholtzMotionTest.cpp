@@ -67,8 +67,9 @@ void expectHelmholtz(Curve curve, const char* name, double force, double beta = 
 } // namespace
 
 // Schelleng's maximum force 2 Z0 vb / (beta (mu_s - mu_d)) is 0.64 N (classical) and 1.37 N (reconstructed)
-// here (reference §6.1); 0.3 N lies well inside both, and far above the rigid-bridge minimum.
-TEST(HelmholtzMotion, ClassicalCurve) { expectHelmholtz<ClassicalFrictionLaw>(ClassicalCurve{}, "classical", 0.3); }
+// here (reference §6.1). Near the rigid-bridge minimum the string is bistable (Helmholtz or double slipping,
+// decided by the start: seed 001 calls such sensitive dependence genuine); 0.4 N is inside the robust region.
+TEST(HelmholtzMotion, ClassicalCurve) { expectHelmholtz<ClassicalFrictionLaw>(ClassicalCurve{}, "classical", 0.4); }
 
 // The reconstructed curve leaves a small sticking reserve in Helmholtz motion: mu_s = 0.75 against
 // mu(vb/beta = 0.5 m/s) = 0.55. At exactly beta = 1/10 every tenth mode is silent at the bow and the
