@@ -53,8 +53,8 @@ TEST(BodyStatistics, MeanSpacingMatchesRequestedModalDensity)
     for (std::uint32_t seed = 1; seed <= 10; ++seed)
     {
         for (const auto& [body, density, from] :
-             {std::tuple{celloBody(seed), celloDensityPerHz, celloHighFromHz},
-              std::tuple{violinBody(seed), violinDensityPerHz, violinHighFromHz}})
+             {std::tuple{celloBody(seed, 10000.0, true), celloDensityPerHz, celloHighFromHz},
+              std::tuple{violinBody(seed, 12000.0, true), violinDensityPerHz, violinHighFromHz}})
         {
             const auto f = highModeFrequencies(body, from);
             ASSERT_GT(f.size(), 100u) << body.name;
@@ -76,7 +76,7 @@ TEST(BodyStatistics, SpacingsShowWignerLevelRepulsion)
     std::vector<double> s;
     for (std::uint32_t seed = 1; seed <= 10; ++seed)
     {
-        const auto f = highModeFrequencies(celloBody(seed), celloHighFromHz);
+        const auto f = highModeFrequencies(celloBody(seed, 10000.0, true), celloHighFromHz);
         for (std::size_t i = 1; i < f.size(); ++i)
             s.push_back((f[i] - f[i - 1]) * celloDensityPerHz);
     }
@@ -204,10 +204,13 @@ TEST(BodyFactory, NamesAndErrors)
 TEST(BodyFactory, ModeCountsReported)
 {
     int below10k = 0;
-    for (const auto& m : celloBody().modes)
+    for (const auto& m : celloBody(1, 10000.0, true).modes)
         below10k += m.frequency < 10000.0;
-    std::printf("[cello] modes below 10 kHz: %d; violin modes below 12 kHz: %zu\n", below10k,
-                violinBody().modes.size());
+    std::printf("[cello] dense modes below 10 kHz: %d; real-time body: %zu modes; violin: %zu\n", below10k,
+                celloBody().modes.size(), violinBody().modes.size());
     EXPECT_GT(below10k, 600);
     EXPECT_LT(below10k, 720); // 6 + 0.07 /Hz * 9450 Hz = 667 expected
+    // Real-time body: 6 + 0.07 /Hz * 650 Hz (550-1200 Hz) + 12 log2(10000/1200) = 88 expected.
+    EXPECT_GT(celloBody().modes.size(), 70u);
+    EXPECT_LT(celloBody().modes.size(), 110u);
 }

@@ -27,6 +27,7 @@ struct StatisticalRecipe
     double hillQ;             ///< bridge-hill quality factor; peak of Re Y_skel is hillQ^2 * skeletonRealY
     double lossAt1kHz;        ///< loss factor eta at 1 kHz
     double lossExponent;      ///< eta(f) = lossAt1kHz * (f / 1 kHz)^lossExponent: the "mild rise"
+    double denseLimitHz;      ///< above this, one band mode per 1/12 octave stands for the overlapping modes
 };
 
 /// Portable random draws. std::mt19937's output sequence is fixed by the standard, but the standard
@@ -63,6 +64,22 @@ double skeletonRealAdmittance(const StatisticalRecipe& r, double frequencyHz)
     return r.skeletonRealY / (a * a + x * x / (r.hillQ * r.hillQ));
 }
 
+/// Above a few times the crossover the modal overlap eta f n_f exceeds 1 and the real admittance is a smooth
+/// skeleton; simulating every mode there costs time and adds nothing the ear or the string can resolve.
+/// One mode per 1/12 octave (spacing df = 5.9 % of f) carries the mean admittance of the modes it replaces
+/// (1/m = 4 Re Y_skel df, the same rule as <1/m> above with n_f = 1/df), damped so that neighbouring band
+/// modes overlap (eta >= df/f): a smooth skeleton with about 40 modes from 1 to 10 kHz instead of 600.
+void appendBandModes(std::vector<BodyMode>& modes, const StatisticalRecipe& r, double fromHz, double maxFrequencyHz)
+{
+    const double step = std::pow(2.0, 1.0 / 12.0);
+    for (double f = fromHz * std::sqrt(step); f < maxFrequencyHz; f *= step)
+    {
+        const double df = f * (std::sqrt(step) - 1.0 / std::sqrt(step));
+        const double eta = std::max(r.lossAt1kHz * std::pow(f / 1000.0, r.lossExponent), df / f);
+        modes.push_back({f, 1.0 / eta, 1.0 / (4.0 * skeletonRealAdmittance(r, f) * df)});
+    }
+}
+
 /// Appends GOE-spaced modes from the crossover up to maxFrequencyHz (exclusive).
 void appendStatisticalModes(std::vector<BodyMode>& modes, const StatisticalRecipe& r, std::uint32_t seed,
                             double maxFrequencyHz)
@@ -91,7 +108,7 @@ void appendStatisticalModes(std::vector<BodyMode>& modes, const StatisticalRecip
 }
 
 BodyParameters assemble(const char* name, const std::vector<BodyMode>& lowModes, const StatisticalRecipe& r,
-                        std::uint32_t seed, double maxFrequencyHz)
+                        std::uint32_t seed, double maxFrequencyHz, bool denseModes)
 {
     if (!(maxFrequencyHz > 0.0) || !std::isfinite(maxFrequencyHz))
         throw std::invalid_argument("body: maxFrequencyHz must be positive and finite");
@@ -100,7 +117,10 @@ BodyParameters assemble(const char* name, const std::vector<BodyMode>& lowModes,
     for (const auto& m : lowModes)
         if (m.frequency < maxFrequencyHz)
             body.modes.push_back(m);
-    appendStatisticalModes(body.modes, r, seed, maxFrequencyHz);
+    const double denseLimit = denseModes ? maxFrequencyHz : std::min(r.denseLimitHz, maxFrequencyHz);
+    appendStatisticalModes(body.modes, r, seed, denseLimit);
+    if (denseLimit < maxFrequencyHz)
+        appendBandModes(body.modes, r, denseLimit, maxFrequencyHz);
     return body;
 }
 
@@ -130,7 +150,7 @@ const std::vector<BodyMode> celloLowModes = {
 //    Re Y_skel peaks at 1.7 x 0.015 s/kg; Q_h = 1/(w_h m_b Y_v) implies an effective bridge mass m_b ~ 5 g.
 //    Above the hill Re Y_skel falls as f^-4 (bridge mass): ~0.1 x at 3.2 kHz, ~5e-3 x at 6.4 kHz;
 //  * eta = 0.025 at 1 kHz rising as f^0.3 (0.021 at 550 Hz, 0.05 at 10 kHz).
-constexpr StatisticalRecipe celloRecipe{550.0, 0.07, 0.015, 1600.0, 1.3, 0.025, 0.3};
+constexpr StatisticalRecipe celloRecipe{550.0, 0.07, 0.015, 1600.0, 1.3, 0.025, 0.3, 1200.0};
 
 // Violin low modes [A, from violin-family literature ranges]: A0 ~ 275 Hz, CBR ~ 405 Hz, B1- ~ 465 Hz,
 // B1+ ~ 540 Hz, lighter than the cello's. B1+ peak Re Y = 40 / (0.07 * 2 pi 540) = 0.17 s/kg.
@@ -147,7 +167,7 @@ const std::vector<BodyMode> violinLowModes = {
 // each) give n_f ~ 0.012 + 0.012 = 0.023 /Hz (spacing ~43 Hz) and a top-plate Y_inf ~ 0.045 s/kg; skeleton
 // 0.035 s/kg (<m> ~ 0.16 kg); crossover 750 Hz; bridge hill at 2.6 kHz with Q_h = 1.5 (peak Re Y_skel
 // 0.08 s/kg, effective bridge mass ~1 g), inside the 2-3 kHz range of reference §5.3 item 5.
-constexpr StatisticalRecipe violinRecipe{750.0, 0.023, 0.035, 2600.0, 1.5, 0.025, 0.3};
+constexpr StatisticalRecipe violinRecipe{750.0, 0.023, 0.035, 2600.0, 1.5, 0.025, 0.3, 1500.0};
 
 } // namespace
 
@@ -170,14 +190,14 @@ BodyParameters rigidBody()
     return BodyParameters{};
 }
 
-BodyParameters celloBody(std::uint32_t seed, double maxFrequencyHz)
+BodyParameters celloBody(std::uint32_t seed, double maxFrequencyHz, bool denseModes)
 {
-    return assemble("cello", celloLowModes, celloRecipe, seed, maxFrequencyHz);
+    return assemble("cello", celloLowModes, celloRecipe, seed, maxFrequencyHz, denseModes);
 }
 
-BodyParameters violinBody(std::uint32_t seed, double maxFrequencyHz)
+BodyParameters violinBody(std::uint32_t seed, double maxFrequencyHz, bool denseModes)
 {
-    return assemble("violin", violinLowModes, violinRecipe, seed, maxFrequencyHz);
+    return assemble("violin", violinLowModes, violinRecipe, seed, maxFrequencyHz, denseModes);
 }
 
 BodyParameters bodyByName(const std::string& name)

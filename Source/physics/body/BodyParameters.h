@@ -29,10 +29,12 @@ struct BodyParameters
 /// A rigid bridge (no body modes).
 BodyParameters rigidBody();
 /// Cello body: parametric low "signature" modes (reference §5.2) plus a statistical high-frequency set
-/// (reference §5.3), generated deterministically from `seed` up to maxFrequencyHz.
-BodyParameters celloBody(std::uint32_t seed = 1, double maxFrequencyHz = 10000.0);
-/// Violin body, built the same way with violin-scaled modes.
-BodyParameters violinBody(std::uint32_t seed = 1, double maxFrequencyHz = 12000.0);
+/// (reference §5.3), generated deterministically from `seed` up to maxFrequencyHz. Above 1.2 kHz, where the
+/// modes overlap, one band mode per 1/12 octave carries their mean admittance (about 90 modes in all);
+/// denseModes = true keeps every statistical mode instead (about 650 below 10 kHz).
+BodyParameters celloBody(std::uint32_t seed = 1, double maxFrequencyHz = 10000.0, bool denseModes = false);
+/// Violin body, built the same way with violin-scaled modes (band modes above 1.5 kHz).
+BodyParameters violinBody(std::uint32_t seed = 1, double maxFrequencyHz = 12000.0, bool denseModes = false);
 /// By name: "cello", "violin" or "rigid"; throws std::invalid_argument naming the expected values.
 BodyParameters bodyByName(const std::string& name);
 
