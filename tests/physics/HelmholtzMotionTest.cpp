@@ -75,12 +75,13 @@ TEST(HelmholtzMotion, ClassicalCurve) { expectHelmholtz<ClassicalFrictionLaw>(Cl
 // mu(vb/beta = 0.5 m/s) = 0.55. At exactly beta = 1/10 every tenth mode is silent at the bow and the
 // secondary waves return in step with the period; in this single-point-bow model they overrun that reserve
 // and cause extra slips at every force tried (0.2-2.5 N). On the
-// Galluzzo rig (beta = 0.0899, cello body) gives clean Helmholtz motion at 1.0-1.2 N; without the body's
+// Galluzzo rig (beta = 0.0899, cello body) gives clean Helmholtz motion at 1.2 N (a narrow region in this
+// model: the sticking friction force carries ripples of +-40 % of Fb from dispersion and torsion); without the body's
 // losses extra slips still appear intermittently. With no hysteresis below 1.47 N (the curve's slope never
 // exceeds 2 Z_eff) the string is recaptured as soon as the rounded corner allows, so slips last about 0.06 P
 // instead of beta P = 0.09 P: the slip-fraction criterion is not asserted for this curve. Both are recorded as
 // open questions (finite bow width, torsional damping, reference §8.4).
 TEST(HelmholtzMotion, ReconstructedCurveOnTheGalluzzoRig)
 {
-    expectHelmholtz<ReconstructedFrictionLaw>(ReconstructedCurve{}, "reconstructed", 1.0, 0.0899, true, false);
+    expectHelmholtz<ReconstructedFrictionLaw>(ReconstructedCurve{}, "reconstructed", 1.2, 0.0899, true, false);
 }

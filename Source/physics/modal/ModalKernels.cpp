@@ -77,6 +77,12 @@ ThreeSums advanceOneInputThreeOutputs(ModalBank& bank, const double* gain, doubl
     const double* __restrict pi = bank.pIm.data();
     const double* __restrict dr = bank.dRe.data();
     const double* __restrict di = bank.dIm.data();
+    const double* __restrict o1r = o1.re.data();
+    const double* __restrict o1i = o1.im.data();
+    const double* __restrict o2r = o2.re.data();
+    const double* __restrict o2i = o2.im.data();
+    const double* __restrict o3r = o3.re.data();
+    const double* __restrict o3i = o3.im.data();
     double s1 = 0.0, s2 = 0.0, s3 = 0.0;
 #pragma omp simd reduction(+ : s1, s2, s3)
     for (int k = 0; k < n; ++k)
@@ -86,9 +92,9 @@ ThreeSums advanceOneInputThreeOutputs(ModalBank& bank, const double* gain, doubl
         const double ni = pr[k] * wi[k] + pi[k] * wr[k] + di[k] * x;
         wr[k] = nr;
         wi[k] = ni;
-        s1 += o1.re[k] * nr - o1.im[k] * ni;
-        s2 += o2.re[k] * nr - o2.im[k] * ni;
-        s3 += o3.re[k] * nr - o3.im[k] * ni;
+        s1 += o1r[k] * nr - o1i[k] * ni;
+        s2 += o2r[k] * nr - o2i[k] * ni;
+        s3 += o3r[k] * nr - o3i[k] * ni;
     }
     return {s1, s2, s3};
 }

@@ -37,6 +37,8 @@ struct BowedStringVoice::Impl
 
     // Direct (instantaneous) coefficients of the coupled bow/bridge solve.
     double Bv = 0, U0 = 0, U1 = 0, U2 = 0, M3 = 0, D = 1, kappa = 0, y0 = 1;
+    // Full-band correction of the bow admittance, c (1 - z^-1): see updateWeights().
+    double bandCorrection = 0.0, previousFriction = 0.0;
     // Histories: outputs of the state before the current input.
     double Sv = 0, Sa = 0, Tv = 0, uh = 0, udh = 0, uddh = 0;
     // Last step's inputs (energy and displacement inspection).
@@ -85,6 +87,11 @@ void BowedStringVoice::Impl::buildModes(const VoiceConfig& cfg, double fs)
     if (cfg.torsion)
         while (nTors < cfg.maxTorsionalModes && (nTors + 1) * pi * string.torsionalWaveSpeed / openLength < modeLimit)
             ++nTors;
+    // Pad each bank to a multiple of the widest vector (8 doubles) with silent modes (zero input and output
+    // weights): the kernels then run without scalar tails.
+    auto padded = [](int n) { return (n + 7) / 8 * 8; };
+    nTrans = padded(nTrans);
+    nTors = cfg.torsion ? padded(nTors) : 0;
     transSpecs.assign(nTrans, {});
     transActive.assign(nTrans, 1.0);
     torsSpecs.assign(nTors, {});
@@ -103,6 +110,11 @@ void BowedStringVoice::Impl::buildModes(const VoiceConfig& cfg, double fs)
             continue;
         bodySpecs.push_back({omega, 1.0 / mode.q});
         bodyGain.push_back(1.0 / mode.effectiveMass);
+    }
+    while (!bodySpecs.empty() && bodySpecs.size() % 8 != 0)
+    {
+        bodySpecs.push_back(bodySpecs.back());
+        bodyGain.push_back(0.0); // silent: never driven, so its state stays zero
     }
     body.configure(bodySpecs, fs);
     aN.assign(nTrans, 0.0);
@@ -187,6 +199,16 @@ void BowedStringVoice::Impl::updateWeights()
     D = 1.0 + (P / L) * U0 + M3 * U2;
     kappa = (1.0 - beta - A1) / D;
     y0 = Ya - Bv * U2 * kappa + (1.0 - beta) * U1 * kappa;
+    // A string answers a sudden force at a point with v = f / (2 Z_eff) at once (McIntyre, Schumacher &
+    // Woodhouse; reference eq. 1.2). The modal bank stops at 0.45 fs, so it spreads that delta over two
+    // samples and its admittance almost vanishes at Nyquist: a sticking contact (a velocity constraint) then
+    // lets the friction force ring at Nyquist. Adding c (1 - z^-1), c = 1/(2 Z_eff) - y0, moves the spread
+    // back into the current sample: the instantaneous admittance becomes the physical one, the admittance at
+    // low frequency is unchanged, and Re c (1 - e^-iwT) >= 0 keeps the bow port passive.
+    const double Z0 = string.impedance();
+    const double Zeff = torsionOn ? Z0 * string.torsionalImpedance / (Z0 + string.torsionalImpedance) : Z0;
+    bandCorrection = std::max(0.0, 1.0 / (2.0 * Zeff) - y0);
+    y0 += bandCorrection;
 }
 
 void BowedStringVoice::Impl::clearState()
@@ -195,7 +217,7 @@ void BowedStringVoice::Impl::clearState()
     tors.reset();
     body.reset();
     Sv = Sa = Tv = uh = udh = uddh = 0;
-    lastF = lastBridge = lastUdd = 0;
+    lastF = lastBridge = lastUdd = previousFriction = 0;
 }
 
 BowedStringVoice::BowedStringVoice() : impl_(std::make_unique<Impl>()) {}
@@ -217,6 +239,7 @@ void BowedStringVoice::prepare(const VoiceConfig& config, std::unique_ptr<Fricti
     s.beta = 0.1;
     s.fingerRatio = 1.0;
     s.stopped = false;
+    s.torsionOn = config.torsion;
     s.buildModes(config, sampleRate);
     s.updateWeights();
     friction_ = std::move(friction);
@@ -260,7 +283,8 @@ VoiceSample BowedStringVoice::step(const BowInput& in) noexcept
 
     const double P = s.string.tension, L = s.length;
     const double Fh = (-(P / L) * s.uh - s.M3 * s.uddh - s.Sa) / s.D;
-    const double vh = s.Sv + s.Tv - s.Bv * (s.uddh + s.U2 * Fh) + (1.0 - s.beta) * (s.udh + s.U1 * Fh);
+    const double vh = s.Sv + s.Tv - s.Bv * (s.uddh + s.U2 * Fh) + (1.0 - s.beta) * (s.udh + s.U1 * Fh) -
+                      s.bandCorrection * s.previousFriction;
     const double vb = in.bowVelocity;
     const JunctionSolution sol = friction_->solve({vh - vb, 1.0 / s.y0, std::max(0.0, in.bowForce)});
     const double f = sol.frictionForce;
@@ -277,6 +301,7 @@ VoiceSample BowedStringVoice::step(const BowInput& in) noexcept
         s.uh = sb.first, s.udh = sb.second, s.uddh = sb.third;
     }
     s.lastF = f, s.lastBridge = F, s.lastUdd = udd;
+    s.previousFriction = f;
 
     VoiceSample out{F, vb + sol.dv, f, vb, friction_->contactTemperature(), sol.sticking};
     // A runaway (non-finite or absurd) state is reset rather than heard: nothing physical reaches 1e4 N here.
@@ -290,16 +315,25 @@ VoiceSample BowedStringVoice::step(const BowInput& in) noexcept
     return out;
 }
 
-int BowedStringVoice::transverseModeCount() const noexcept { return impl_->trans.size(); }
-int BowedStringVoice::torsionalModeCount() const noexcept { return impl_->tors.size(); }
-int BowedStringVoice::bodyModeCount() const noexcept { return impl_->body.size(); }
+namespace
+{
+int countNonZero(const std::vector<double>& v)
+{
+    return static_cast<int>(std::count_if(v.begin(), v.end(), [](double x) { return x != 0.0; }));
+}
+} // namespace
+
+int BowedStringVoice::transverseModeCount() const noexcept { return countNonZero(impl_->transActive); }
+int BowedStringVoice::torsionalModeCount() const noexcept { return countNonZero(impl_->torsActive); }
+int BowedStringVoice::bodyModeCount() const noexcept { return countNonZero(impl_->bodyGain); }
 double BowedStringVoice::instantaneousAdmittance() const noexcept { return impl_->y0; }
 
 std::vector<double> BowedStringVoice::transverseModeFrequencies() const
 {
     std::vector<double> f;
-    for (const auto& spec : impl_->transSpecs)
-        f.push_back(spec.angularFrequency / (2.0 * pi));
+    for (std::size_t i = 0; i < impl_->transSpecs.size(); ++i)
+        if (impl_->transActive[i] != 0.0)
+            f.push_back(impl_->transSpecs[i].angularFrequency / (2.0 * pi));
     return f;
 }
 
@@ -309,6 +343,8 @@ double BowedStringVoice::Impl::energy() const
     double u = 0, ud = 0, e = 0;
     for (int j = 0; j < body.size(); ++j)
     {
+        if (bodyGain[j] == 0.0)
+            continue; // padding
         const double in = lastBridge * bodyGain[j];
         const double x = body.outputAtLastStep(j, ModalOutput::Displacement, in);
         const double v = body.outputAtLastStep(j, ModalOutput::Velocity, in);

@@ -1,0 +1,112 @@
+// Viscous thermal friction law (seed 000 eq. 3; seed 002 eq. 2).
+#include "ViscousThermalLaw.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace rosin::physics
+{
+
+void ViscousThermalLaw::prepare(double sampleRate)
+{
+    heat_.prepare(contact_, sampleRate);
+    table_.build(contact_, sampleRate, CalibrationQuantity::Viscosity);
+    prepared_ = true;
+    reset();
+}
+
+void ViscousThermalLaw::reset() noexcept
+{
+    heat_.reset();
+    previousPower_ = 0.0;
+    previousSpeed_ = 0.0;
+}
+
+double ViscousThermalLaw::viscosity(double T) const noexcept
+{
+    return table_.lookup(T + contact_.ambientOffset);
+}
+
+double ViscousThermalLaw::dampingCoefficient(double T, double bowForce) const noexcept
+{
+    const double a = contact_.rig.radiusAt(bowForce);
+    return std::numbers::pi * a * a * viscosity(T) / contact_.rig.layerThickness;
+}
+
+// Load line f = 2Z (dv - dvh) meets f = -c dv at dv = 2Z dvh / (2Z + c).
+JunctionSolution ViscousThermalLaw::solveLinear(double dvh, double twoZ, double c) noexcept
+{
+    const double dv = twoZ * dvh / (twoZ + c);
+    return {dv, -c * dv, std::abs(dv) < kStickingSpeed};
+}
+
+JunctionSolution ViscousThermalLaw::solve(const JunctionInput& in) noexcept
+{
+    const double dvh = std::isfinite(in.dvHistory) ? in.dvHistory : 0.0;
+    const double Fb = std::isfinite(in.bowForce) ? std::max(in.bowForce, 0.0) : 0.0;
+    const double twoZ = in.loadSlope;
+    if (!prepared_)
+        return {dvh, 0.0, false};
+    // g(T) = Phi(P(T)) - T: the temperature this step reaches with the power dissipated at viscosity eta(T),
+    // minus T. Phi (HeatBalance::predict) is O(1).
+    JunctionSolution s;
+    auto residual = [&](double T)
+    {
+        s = solveLinear(dvh, twoZ, dampingCoefficient(T, Fb));
+        return heat_.predict(std::abs(s.frictionForce * s.dv), std::abs(s.dv), Fb) - T;
+    };
+    // Predictor (previous power) and one corrector pass, as for the other thermal laws.
+    const double Tpred = heat_.predict(previousPower_, previousSpeed_, Fb);
+    const double Tcorr = Tpred + residual(Tpred);
+    const double g = residual(Tcorr);
+    if (std::abs(g) > 1e-3 * (1.0 + Tcorr)) // K
+    {
+        // The corrector did not settle: eta(T) spans ~9 decades, and with a stiff load line (2Z >> c, e.g.
+        // velocity-controlled sliding) the fixed-point gain dPhi/dT >> 1, so plain substitution jumps
+        // between a cold and a hot state every sample. Solve g(T) = 0 instead, on a bracket that always
+        // holds a root: P ranges over [0, Pmax], Pmax = 2Z dvh^2 / 4 (at c = 2Z).
+        double lo = Tcorr, hi = Tcorr, glo = g, ghi = g;
+        if (g > 0.0)
+        {
+            hi = heat_.predict(0.25 * twoZ * dvh * dvh, 0.0, Fb); // g(hi) <= 0
+            ghi = residual(hi);
+        }
+        else
+        {
+            lo = heat_.predict(0.0, std::abs(dvh), Fb); // g(lo) >= 0
+            glo = residual(lo);
+        }
+        // Illinois false position; keeps the bracket, converges superlinearly.
+        int side = 0;
+        double T = glo == 0.0 ? lo : ghi == 0.0 ? hi : Tcorr;
+        for (int it = 0; it < 60 && glo > 0.0 && ghi < 0.0; ++it)
+        {
+            T = (lo * ghi - hi * glo) / (ghi - glo);
+            const double gT = residual(T);
+            if (std::abs(gT) <= 1e-9 * (1.0 + T) || hi - lo <= 1e-12 * (1.0 + hi))
+                break;
+            if (gT > 0.0)
+            {
+                lo = T, glo = gT;
+                if (side == 1)
+                    ghi *= 0.5;
+                side = 1;
+            }
+            else
+            {
+                hi = T, ghi = gT;
+                if (side == -1)
+                    glo *= 0.5;
+                side = -1;
+            }
+        }
+        residual(T); // leaves s at the solution for T
+    }
+    previousPower_ = std::abs(s.frictionForce * s.dv);
+    previousSpeed_ = std::abs(s.dv);
+    heat_.commit(previousPower_, previousSpeed_, Fb);
+    return s;
+}
+
+} // namespace rosin::physics

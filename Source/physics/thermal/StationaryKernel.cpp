@@ -1,0 +1,209 @@
+// Disc-average half-space Green's function (reference eq. 2.5) and its non-negative SOE fit (eq. 2.8).
+#include "StationaryKernel.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <unsupported/Eigen/SpecialFunctions>
+
+namespace rosin::physics
+{
+
+namespace
+{
+/// 1 - e^-u (I0(u) + I1(u)) for u >= 0, using Eigen's exponentially scaled Bessel functions. For small u
+/// the difference cancels, so the series u/2 - u^2/4 + 5u^3/48 (from the power series of e^-u, I0, I1)
+/// is used instead.
+double oneMinusScaledBessel(double u) noexcept
+{
+    if (u < 1e-4)
+        return u * (0.5 - u * (0.25 - u * 5.0 / 48.0));
+    return 1.0 - (Eigen::numext::bessel_i0e(u) + Eigen::numext::bessel_i1e(u));
+}
+
+/// Lawson-Hanson active-set NNLS: argmin |A x - b| subject to x >= 0. Columns are normalised internally.
+/// Off the audio thread only (allocates). Iterations are capped; an index whose unconstrained value is
+/// not positive right after it enters the passive set is blocked until x changes (avoids cycling on
+/// nearly collinear exponentials).
+Eigen::VectorXd nonNegativeLeastSquares(Eigen::MatrixXd A, const Eigen::VectorXd& b)
+{
+    const Eigen::Index m = A.rows(), n = A.cols();
+    Eigen::VectorXd norms = A.colwise().norm().transpose();
+    for (Eigen::Index j = 0; j < n; ++j)
+        A.col(j) /= (norms[j] > 0.0 ? norms[j] : 1.0);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+    std::vector<bool> passive(static_cast<size_t>(n), false), blocked(static_cast<size_t>(n), false);
+    const double tol = 10.0 * std::numeric_limits<double>::epsilon() * static_cast<double>(std::max(m, n));
+    const int maxIterations = static_cast<int>(6 * n);
+    int iterations = 0;
+    while (iterations < maxIterations)
+    {
+        const Eigen::VectorXd w = A.transpose() * (b - A * x);
+        Eigen::Index entering = -1;
+        double wMax = tol;
+        for (Eigen::Index j = 0; j < n; ++j)
+            if (!passive[size_t(j)] && !blocked[size_t(j)] && w[j] > wMax)
+                wMax = w[j], entering = j;
+        if (entering < 0)
+            break;
+        passive[size_t(entering)] = true;
+        bool first = true;
+        while (iterations++ < maxIterations)
+        {
+            std::vector<Eigen::Index> idx;
+            for (Eigen::Index j = 0; j < n; ++j)
+                if (passive[size_t(j)])
+                    idx.push_back(j);
+            Eigen::MatrixXd Ap(m, static_cast<Eigen::Index>(idx.size()));
+            for (size_t k = 0; k < idx.size(); ++k)
+                Ap.col(Eigen::Index(k)) = A.col(idx[k]);
+            const Eigen::VectorXd zp = Ap.colPivHouseholderQr().solve(b);
+            Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
+            for (size_t k = 0; k < idx.size(); ++k)
+                z[idx[k]] = zp[Eigen::Index(k)];
+            if (first && z[entering] <= 0.0)
+            {
+                passive[size_t(entering)] = false; // numerically useless direction: block it for now
+                blocked[size_t(entering)] = true;
+                break;
+            }
+            first = false;
+            bool feasible = true;
+            double alpha = 1.0;
+            Eigen::Index leaving = -1;
+            for (Eigen::Index j : idx)
+                if (z[j] <= 0.0)
+                {
+                    feasible = false;
+                    const double step = x[j] / (x[j] - z[j]);
+                    if (leaving < 0 || step < alpha)
+                        alpha = step, leaving = j;
+                }
+            if (feasible)
+            {
+                x = z;
+                std::fill(blocked.begin(), blocked.end(), false);
+                break;
+            }
+            x += alpha * (z - x);
+            x[leaving] = 0.0; // exactly on the boundary
+            for (Eigen::Index j : idx)
+                if (x[j] <= 0.0)
+                    x[j] = 0.0, passive[size_t(j)] = false;
+            std::fill(blocked.begin(), blocked.end(), false);
+        }
+    }
+    for (Eigen::Index j = 0; j < n; ++j)
+        x[j] /= (norms[j] > 0.0 ? norms[j] : 1.0);
+    return x;
+}
+} // namespace
+
+double StationaryKernel::green(double t, double a, double K, double rhoC) noexcept
+{
+    if (!(t > 0.0))
+        return 0.0;
+    const double kappa = K / rhoC;
+    const double u = a * a / (2.0 * kappa * t);
+    const double oneD = 1.0 / (std::numbers::pi * a * a * rhoC * std::sqrt(std::numbers::pi * kappa * t));
+    return oneD * oneMinusScaledBessel(u);
+}
+
+double StationaryKernel::steadyResistance(double a, double K) noexcept
+{
+    return 8.0 / (3.0 * std::numbers::pi * std::numbers::pi * K * a);
+}
+
+double StationaryKernel::integrateGreen(double t0, double t1, double a, double K, double rhoC, int n) noexcept
+{
+    // t = s^2, dt = 2 s ds; near s = 0, G(s^2) 2 s -> 2 / (A e sqrt(pi)), finite and smooth.
+    n += n % 2;
+    const double s0 = std::sqrt(std::max(t0, 0.0)), s1 = std::sqrt(t1), h = (s1 - s0) / n;
+    auto f = [&](double s)
+    {
+        if (s <= 0.0) // limit of G(s^2) 2 s at s = 0: 2 / (pi a^2 rho c sqrt(pi kappa))
+            return 2.0 / (std::numbers::pi * a * a * rhoC * std::sqrt(std::numbers::pi * K / rhoC));
+        return green(s * s, a, K, rhoC) * 2.0 * s;
+    };
+    double sum = f(s0) + f(s1);
+    for (int i = 1; i < n; ++i)
+        sum += f(s0 + i * h) * (i % 2 ? 4.0 : 2.0);
+    return sum * h / 3.0;
+}
+
+void StationaryKernel::fit(double a, double K, double rhoC, double dt, const FitOptions& opt)
+{
+    radius_ = a, conductivity_ = K, heatCapacity_ = rhoC, dt_ = dt;
+    g0_ = integrateGreen(0.0, dt, a, K, rhoC);
+    const int M = std::max(opt.terms, 2);
+    const double tauLo = std::log(opt.tauBelowDt * dt), tauHi = std::log(opt.tauAboveMax * opt.maxTime);
+    tau_.resize(size_t(M));
+    for (int k = 0; k < M; ++k)
+        tau_[size_t(k)] = std::exp(tauLo + (tauHi - tauLo) * k / (M - 1));
+
+    const double decades = std::log10(opt.maxTime / dt);
+    const int points = std::max(static_cast<int>(std::ceil(decades * opt.pointsPerDecade)) + 1, 2 * M);
+    Eigen::MatrixXd A(points + 1, M);
+    Eigen::VectorXd b = Eigen::VectorXd::Ones(points + 1);
+    for (int i = 0; i < points; ++i)
+    {
+        const double t = dt * std::pow(opt.maxTime / dt, double(i) / (points - 1));
+        const double g = green(t, a, K, rhoC);
+        for (int k = 0; k < M; ++k)
+            A(i, k) = std::exp(-t / tau_[size_t(k)]) / g; // relative error
+    }
+    // Steady-resistance row: sum c tau e^{-dt/tau} = int_dt^inf G (the scheme's steady state, see header).
+    const double tail = steadyResistance(a, K) - g0_;
+    for (int k = 0; k < M; ++k)
+        A(points, k) = opt.integralWeight * tau_[size_t(k)] * std::exp(-dt / tau_[size_t(k)]) / tail;
+    b[points] = opt.integralWeight;
+
+    const Eigen::VectorXd c = nonNegativeLeastSquares(A, b);
+    c_.assign(c.data(), c.data() + M);
+}
+
+double StationaryKernel::evaluate(double t) const noexcept
+{
+    double s = 0.0;
+    for (size_t k = 0; k < c_.size(); ++k)
+        s += c_[k] * std::exp(-t / tau_[k]);
+    return s;
+}
+
+double StationaryKernel::integral() const noexcept
+{
+    double s = 0.0;
+    for (size_t k = 0; k < c_.size(); ++k)
+        s += c_[k] * tau_[k];
+    return s;
+}
+
+double StationaryKernel::discreteSteadyResistance() const noexcept
+{
+    double s = g0_;
+    for (size_t k = 0; k < c_.size(); ++k)
+        s += c_[k] * tau_[k] * std::exp(-dt_ / tau_[k]);
+    return s;
+}
+
+double StationaryKernel::maxRelativeError(double t0, double t1) const noexcept
+{
+    const int n = std::max(2, static_cast<int>(100.0 * std::log10(t1 / t0)) + 1);
+    double worst = 0.0;
+    for (int i = 0; i < n; ++i)
+    {
+        const double t = t0 * std::pow(t1 / t0, double(i) / (n - 1));
+        const double g = green(t, radius_, conductivity_, heatCapacity_);
+        worst = std::max(worst, std::abs(evaluate(t) / g - 1.0));
+    }
+    return worst;
+}
+
+int StationaryKernel::zeroTerms() const noexcept
+{
+    return static_cast<int>(std::count(c_.begin(), c_.end(), 0.0));
+}
+
+} // namespace rosin::physics

@@ -1,0 +1,75 @@
+#pragma once
+// Heat conduction into the stationary side of the contact (the string surface, treated as a rosin-like
+// half-space): the disc-average Green's function and its sum-of-exponentials (SOE) approximation.
+// Reference §2.3.1 (eq. 2.5) and §2.5 (eqs. 2.8-2.9); reference script soe.py.
+#include <vector>
+
+namespace rosin::physics
+{
+
+/// G_avg(t) of a uniformly heated disc on a half-space and an SOE fit G(t) ~ sum_m c_m exp(-t / tau_m).
+/// fit() allocates (call off the audio thread); every const accessor is allocation-free.
+class StationaryKernel
+{
+  public:
+    struct FitOptions
+    {
+        int terms = 44;              ///< number of exponentials M
+        double maxTime = 1e4;        ///< s, end of the fitted interval [dt, maxTime]
+        int pointsPerDecade = 40;    ///< collocation density in log t
+        double tauBelowDt = 0.1;     ///< smallest tau = tauBelowDt * dt
+        double tauAboveMax = 20.0;   ///< largest tau = tauAboveMax * maxTime (carries the t^-3/2 tail)
+        double integralWeight = 1e3; ///< weight of the steady-resistance row (see fit())
+    };
+
+    /// Contact-average surface temperature rise (K) per joule deposited at t = 0 uniformly over a disc of
+    /// radius a (m) on a half-space of conductivity K (W/m/K) and volumetric heat capacity rho c (J/m^3/K):
+    ///   G_avg(t) = [1 - e^-u (I0(u) + I1(u))] / (pi a^2 rho c sqrt(pi kappa t)),  u = a^2 / (2 kappa t),
+    /// kappa = K / (rho c). Reference eq. 2.5 [D]. Units K/J; t in s (> 0).
+    static double green(double timeS, double radiusM, double conductivity,
+                        double volumetricHeatCapacity) noexcept;
+
+    /// int_0^inf G_avg dt = 8 / (3 pi^2 K a), K/W: mean temperature of a uniformly heated disc per watt
+    /// (reference §2.3.1, classical result).
+    static double steadyResistance(double radiusM, double conductivity) noexcept;
+
+    /// int_t0^t1 G_avg dt (K/W) by composite Simpson in s = sqrt(t), which removes the t^-1/2 singularity.
+    static double integrateGreen(double t0, double t1, double radiusM, double conductivity,
+                                 double volumetricHeatCapacity, int intervals = 4000) noexcept;
+
+    /// Non-negative weighted least-squares fit (relative error, Lawson-Hanson NNLS) of the SOE to G_avg on
+    /// [dt, maxTime], log-spaced tau in [tauBelowDt dt, tauAboveMax maxTime]. One extra row asks that the
+    /// scheme's discrete steady resistance g0 + sum c_m tau_m exp(-dt/tau_m) equal 8/(3 pi^2 K a), so the
+    /// time-stepped steady state matches eq. 2.7. Also computes the first-step weight g0 = int_0^dt G.
+    void fit(double radiusM, double conductivity, double volumetricHeatCapacity, double timeStepS,
+             const FitOptions& options);
+    void fit(double radiusM, double conductivity, double volumetricHeatCapacity, double timeStepS)
+    {
+        fit(radiusM, conductivity, volumetricHeatCapacity, timeStepS, FitOptions{});
+    }
+
+    int size() const noexcept { return static_cast<int>(tau_.size()); }
+    const std::vector<double>& coefficients() const noexcept { return c_; }    ///< c_m, K/J
+    const std::vector<double>& timeConstants() const noexcept { return tau_; } ///< tau_m, s
+    double timeStep() const noexcept { return dt_; }
+    double radius() const noexcept { return radius_; }
+
+    /// SOE value sum_m c_m exp(-t/tau_m), K/J.
+    double evaluate(double timeS) const noexcept;
+    /// First-step weight g0 = int_0^dt G_avg dt (exact quadrature, not the SOE), K/W.
+    double firstStepWeight() const noexcept { return g0_; }
+    /// Integral of the SOE over [0, inf): sum_m c_m tau_m, K/W.
+    double integral() const noexcept;
+    /// Steady resistance of the time-stepping scheme (2.9): g0 + sum_m c_m tau_m exp(-dt/tau_m), K/W.
+    double discreteSteadyResistance() const noexcept;
+    /// Largest |SOE/G_avg - 1| on a log grid (100 points per decade) over [t0, t1].
+    double maxRelativeError(double t0, double t1) const noexcept;
+    /// Number of coefficients the fit left at exactly zero (NNLS inactive set).
+    int zeroTerms() const noexcept;
+
+  private:
+    std::vector<double> c_, tau_;
+    double g0_ = 0.0, dt_ = 0.0, radius_ = 0.0, conductivity_ = 0.0, heatCapacity_ = 0.0;
+};
+
+} // namespace rosin::physics

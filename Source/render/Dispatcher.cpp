@@ -1,0 +1,110 @@
+#include "Dispatcher.h"
+
+#include <cstdio>
+#include <exception>
+
+#include "CommandLine.h"
+#include "RenderCommand.h"
+
+#ifndef ROSIN_VERSION
+#define ROSIN_VERSION "unknown"
+#endif
+
+namespace rosin::cli
+{
+
+namespace
+{
+struct Command
+{
+    const char* name;
+    const char* summary;
+    int (*run)(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+    std::string (*help)();
+};
+
+// One entry (and one file) per subcommand; later: scan, discover, synth-data.
+const Command kCommands[] = {
+    {"render", "render a bow gesture to a WAV of the bridge force (and a probe of internal channels)",
+     runRender, renderHelp},
+};
+
+const Command* findCommand(const std::string& name)
+{
+    for (const auto& c : kCommands)
+        if (name == c.name)
+            return &c;
+    return nullptr;
+}
+} // namespace
+
+std::string usage()
+{
+    std::string text = "rosin " ROSIN_VERSION " - physically modelled bowed string\n"
+                       "\n"
+                       "usage: rosin COMMAND [options]\n"
+                       "       rosin COMMAND --help     options of one command\n"
+                       "       rosin --help | --version\n"
+                       "\n"
+                       "commands:\n";
+    for (const auto& c : kCommands)
+    {
+        char line[200];
+        std::snprintf(line, sizeof(line), "  %-10s %s\n", c.name, c.summary);
+        text += line;
+    }
+    text += "\n"
+            "All quantities are SI (N, m, s, m/s). Errors name the file or option, the field and what was\n"
+            "expected.\n"
+            "exit status: 0 success, 1 bad value, file or preset (or a failed render), 2 usage error\n";
+    return text;
+}
+
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+{
+    if (args.empty())
+    {
+        err << usage();
+        return kExitUsageError;
+    }
+    const std::string& first = args.front();
+    if (first == "--help" || first == "-h" || first == "help")
+    {
+        const Command* c = args.size() > 1 ? findCommand(args[1]) : nullptr;
+        out << (c != nullptr ? c->help() : usage());
+        return kExitOk;
+    }
+    if (first == "--version")
+    {
+        out << "rosin " ROSIN_VERSION "\n";
+        return kExitOk;
+    }
+    const Command* command = findCommand(first);
+    if (command == nullptr)
+    {
+        err << "error: unknown command \"" << first << "\"\n"
+            << "see 'rosin --help'\n";
+        return kExitUsageError;
+    }
+    try
+    {
+        return command->run(std::vector<std::string>(args.begin() + 1, args.end()), out, err);
+    }
+    catch (const UsageError& e)
+    {
+        err << "error: " << e.what() << "\nsee 'rosin " << command->name << " --help'\n";
+        return kExitUsageError;
+    }
+    catch (const std::exception& e)
+    {
+        err << "error: " << e.what() << "\n";
+        return kExitInputError;
+    }
+    catch (...)
+    {
+        err << "error: unexpected failure\n";
+        return kExitInputError;
+    }
+}
+
+} // namespace rosin::cli

@@ -1,0 +1,328 @@
+#include "RenderCommand.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+
+#include "CommandLine.h"
+#include "OfflineRender.h"
+#include "ProbeChannels.h"
+#include "WavWriter.h"
+#include "config/GestureScriptLoader.h"
+#include "config/JsonObject.h"
+#include "config/PresetLoader.h"
+#include "config/VoiceSetup.h"
+#include "gesture/BuiltinGestures.h"
+#include "gesture/GestureLimits.h"
+
+namespace rosin::cli
+{
+
+namespace
+{
+constexpr gesture::Range kSampleRate{8000.0, 384000.0, "Hz"};
+constexpr gesture::Range kScale{0.0, 1e9, "1/N", true};
+constexpr double kDefaultSampleRate = 48000.0;
+constexpr double kPeakTarget = 0.8912509381337456; // -1 dBFS: the listening file never clips when converted
+const char* const kDefaultOut = "rosin-render.wav";
+
+struct RenderOptions
+{
+    std::string gesture = "steady";
+    std::string out = kDefaultOut;
+    std::optional<std::string> probe, preset, friction, body;
+    double sampleRate = kDefaultSampleRate;
+    std::optional<double> scale;
+    bool help = false;
+};
+
+RenderOptions parseRenderOptions(const std::vector<std::string>& args)
+{
+    RenderOptions o;
+    const auto options = parseOptions(
+        args,
+        {"--gesture", "--out", "--probe", "--preset", "--friction", "--body", "--sample-rate", "--scale"},
+        {"--help", "-h"});
+    for (const Option& opt : options)
+    {
+        const std::string& v = opt.value.value_or("");
+        if (opt.name == "--help" || opt.name == "-h")
+            o.help = true;
+        else if (opt.name == "--gesture")
+            o.gesture = v;
+        else if (opt.name == "--out")
+            o.out = v;
+        else if (opt.name == "--probe")
+            o.probe = v;
+        else if (opt.name == "--preset")
+            o.preset = v;
+        else if (opt.name == "--friction")
+            o.friction = v;
+        else if (opt.name == "--body")
+            o.body = v;
+        else if (opt.name == "--sample-rate")
+        {
+            o.sampleRate = parseNumber(opt.name, v);
+            // WAV headers store an integer rate.
+            if (!kSampleRate.contains(o.sampleRate) || o.sampleRate != std::floor(o.sampleRate))
+                throw config::ConfigError(opt.name, "", "an integer in 8000..384000 (Hz)", "\"" + v + "\"");
+        }
+        else if (opt.name == "--scale")
+        {
+            o.scale = parseNumber(opt.name, v);
+            if (!kScale.contains(*o.scale))
+                throw config::ConfigError(opt.name, "", kScale.describe(), "\"" + v + "\"");
+        }
+    }
+    for (const std::string* path : {&o.out, o.probe ? &*o.probe : nullptr})
+        if (path != nullptr && path->empty())
+            throw config::ConfigError("--out/--probe", "", "a file name", "an empty string");
+    const auto normal = [](const std::string& p) { return std::filesystem::absolute(p).lexically_normal(); };
+    if (o.probe && normal(*o.probe) == normal(o.out))
+        throw config::ConfigError("--probe", "", "a different file from --out", "\"" + *o.probe + "\"");
+    return o;
+}
+
+void requireChoice(const std::string& option, const std::string& value,
+                   const std::vector<std::string>& allowed)
+{
+    if (std::find(allowed.begin(), allowed.end(), value) == allowed.end())
+        throw config::ConfigError(option, "", config::oneOfText(allowed), "\"" + value + "\"");
+}
+
+config::Preset choosePreset(const RenderOptions& o)
+{
+    config::Preset preset = o.preset ? config::loadPreset(*o.preset) : config::defaultPreset();
+    if (o.friction)
+    {
+        requireChoice("--friction", *o.friction, config::frictionNames());
+        preset.friction = *o.friction;
+    }
+    if (o.body)
+    {
+        requireChoice("--body", *o.body, config::bodyNames());
+        preset.body = *o.body;
+    }
+    return preset;
+}
+
+gesture::GestureScript chooseGesture(const std::string& spec, const gesture::GestureStart& start)
+{
+    if (gesture::isBuiltinGestureSpec(spec))
+    {
+        try
+        {
+            return gesture::parseBuiltinGesture(spec);
+        }
+        catch (const gesture::GestureError& e)
+        {
+            throw config::ConfigError("--gesture " + spec, e.field(), e.expected(), e.got());
+        }
+    }
+    std::error_code ec;
+    if (!spec.ends_with(".json") && !std::filesystem::exists(spec, ec))
+        throw config::ConfigError(
+            "--gesture", "", "steady[:key=value,...], guettler[:key=value,...] or a gesture script FILE.json",
+            "\"" + spec + "\"");
+    return config::loadGestureScript(spec, start);
+}
+
+std::string probeComment()
+{
+    std::string text = "rosin probe, SI units, channels:";
+    for (const auto& c : kProbeChannels)
+        text += std::string(" ") + c.name + "[" + c.unit + "]";
+    return text;
+}
+
+// Word-wraps `text` to `width` columns, every line indented by `indent` spaces.
+std::string wrap(const std::string& text, std::size_t indent, std::size_t width)
+{
+    std::string result, line(indent, ' ');
+    std::size_t pos = 0;
+    while (pos < text.size())
+    {
+        const std::size_t space = std::min(text.find(' ', pos), text.size());
+        const std::string word = text.substr(pos, space - pos);
+        if (line.size() > indent && line.size() + 1 + word.size() > width)
+        {
+            result += line + "\n";
+            line.assign(indent, ' ');
+        }
+        line += (line.size() > indent ? " " : "") + word;
+        pos = space + 1;
+    }
+    return result + line + "\n";
+}
+
+std::string fixed(double value, int digits)
+{
+    char buffer[64];
+    std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
+    return buffer;
+}
+} // namespace
+
+std::string renderHelp()
+{
+    std::string presets;
+    for (const auto& n : config::presetNames())
+        presets += (presets.empty() ? "" : ", ") + n;
+    std::string channels;
+    for (std::size_t i = 0; i < kProbeChannels.size(); ++i)
+    {
+        const auto& c = kProbeChannels[i];
+        char line[160];
+        std::snprintf(line, sizeof(line), "                           %zu %-19s %-4s %s\n", i + 1, c.name,
+                      c.unit, c.what);
+        channels += line;
+    }
+    return "usage: rosin render [--gesture SPEC|FILE.json] [--out FILE.wav] [--probe FILE.wav]\n"
+           "                    [--preset NAME|FILE.json] [--friction LAW] [--body BODY]\n"
+           "                    [--sample-rate HZ] [--scale S]\n"
+           "\n"
+           "Drives one bowed-string voice with a bow gesture and writes the force of the string on the "
+           "bridge.\n"
+           "\n"
+           "options:\n"
+           "  --gesture SPEC|FILE.json the bow gesture (default: steady). Built-in gestures:\n" +
+           gesture::builtinGestureHelp(std::string(27, ' ')) +
+           "                           or a JSON gesture script (\"format\": \"rosin-gesture/1\") of timed "
+           "segments\n"
+           "                           of force, speed or acceleration, beta and finger, each constant or a "
+           "ramp;\n"
+           "                           see Resources/docs/gesture-script.md. Absent values in a script's first "
+           "segment:\n"
+           "                           force 1 N, speed 0 (bow at rest), the preset's beta, finger 1.\n"
+           "  --out FILE.wav           the bridge force, mono 32-bit float, scaled for listening\n"
+           "                           (default: " +
+           kDefaultOut +
+           "); the scale is printed\n"
+           "  --scale S                fixed scale of --out in 1/N (sample = S x force); default: the peak "
+           "is\n"
+           "                           normalised to -1 dBFS\n"
+           "  --probe FILE.wav         also write internal channels, 32-bit float, physical SI values (not\n"
+           "                           normalised), 5 channels in this order:\n" +
+           channels +
+           "  --preset NAME|FILE.json  instrument preset (see Resources/docs/presets.md); a NAME is looked up in\n"
+           "                           " +
+           config::presetDirectory() + " (environment ROSIN_PRESET_DIR overrides)\n" +
+           wrap("available: " + (presets.empty() ? std::string("none found") : presets), 27, 106) +
+           "                           default: open cello D3 of the seed's Galluzzo rig, cello body,\n"
+           "                           plastic friction, Galluzzo contact, beta 0.0899\n"
+           "  --friction LAW           replace the preset's friction law: classical, reconstructed, "
+           "plastic,\n"
+           "                           viscous, modified-bow, modified-rod\n"
+           "  --body BODY              replace the preset's body: cello, violin, rigid\n"
+           "  --sample-rate HZ         integer, 8000..384000 (default 48000)\n"
+           "  -h, --help               this text\n"
+           "\n"
+           "valid ranges: beta 0.01..0.5, force 0..20 N, speed -5..5 m/s, acceleration -50..50 m/s^2,\n"
+           "finger 0.1..1 (vibrating / open length), seconds > 0 and <= 600 per segment and in total.\n"
+           "\n"
+           "examples:\n"
+           "  rosin render --gesture guettler:acceleration=1.56,force=0.84 --out g.wav --probe g-probe.wav\n"
+           "  rosin render --preset schumacher-rig --gesture steady:speed=0.1,force=1.18,beta=0.127\n"
+           "  rosin render --preset cello-classical --body rigid --gesture my-gesture.json\n"
+           "\n"
+           "exit status: 0 success, 1 bad value, file or preset, 2 unknown option or missing value\n";
+}
+
+int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+{
+    const RenderOptions o = parseRenderOptions(args);
+    if (o.help)
+    {
+        out << renderHelp();
+        return kExitOk;
+    }
+
+    // Everything that can fail on input is checked before the first sample is computed.
+    const config::Preset preset = choosePreset(o);
+    const config::VoiceSetup setup = config::buildVoiceSetup(preset);
+    gesture::GestureStart start;
+    start.beta = preset.beta;
+    const gesture::GestureScript script = chooseGesture(o.gesture, start);
+    gesture::BowGesture bow;
+    bow.prepare(script, start, o.sampleRate);
+
+    physics::BowedStringVoice voice;
+    voice.prepare(setup.voice, physics::makeFrictionLaw(setup.friction, setup.contact), o.sampleRate);
+
+    out << "preset " << preset.name << " (" << preset.source << "): string " << setup.voice.string.name
+        << ", body " << preset.body << ", friction " << preset.friction << ", contact " << preset.contact
+        << "\n";
+    out << "gesture " << o.gesture << ": " << script.segments.size() << " segment(s), " << bow.totalSamples()
+        << " samples at " << o.sampleRate << " Hz (" << fixed(script.totalSeconds(), 6) << " s)\n";
+
+    WavWriter audioFile(o.out, o.sampleRate, 1, "rosin bridge force, scaled for listening");
+    std::optional<WavWriter> probeFile;
+    if (o.probe)
+        probeFile.emplace(*o.probe, o.sampleRate, static_cast<int>(kProbeChannels.size()), probeComment());
+
+    std::vector<float> bridge;
+    bridge.reserve(static_cast<std::size_t>(bow.totalSamples()));
+    std::array<std::vector<float>, kProbeChannels.size()> probeBlock;
+    const auto began = std::chrono::steady_clock::now();
+    const RenderStats stats =
+        renderGesture(voice, bow,
+                      [&](const physics::VoiceSample* s, int n)
+                      {
+                          for (int i = 0; i < n; ++i)
+                              bridge.push_back(static_cast<float>(s[i].bridgeForce));
+                          if (!probeFile)
+                              return;
+                          for (auto& channel : probeBlock)
+                              channel.resize(static_cast<std::size_t>(n));
+                          for (int i = 0; i < n; ++i)
+                          {
+                              const auto k = static_cast<std::size_t>(i);
+                              probeBlock[0][k] = static_cast<float>(s[i].bridgeForce);
+                              probeBlock[1][k] = static_cast<float>(s[i].bowPointVelocity);
+                              probeBlock[2][k] = static_cast<float>(s[i].frictionForce);
+                              probeBlock[3][k] = static_cast<float>(s[i].bowVelocity);
+                              probeBlock[4][k] = static_cast<float>(s[i].contactTemperature);
+                          }
+                          std::array<const float*, kProbeChannels.size()> pointers{};
+                          for (std::size_t c = 0; c < pointers.size(); ++c)
+                              pointers[c] = probeBlock[c].data();
+                          probeFile->write(pointers.data(), n);
+                      });
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+
+    const double scale =
+        o.scale ? *o.scale : (stats.peakBridgeForce > 0.0 ? kPeakTarget / stats.peakBridgeForce : 1.0);
+    for (float& x : bridge)
+        x = static_cast<float>(x * scale);
+    const float* channel = bridge.data();
+    audioFile.write(&channel, static_cast<int>(bridge.size()));
+    audioFile.close();
+    if (probeFile)
+        probeFile->close();
+
+    out << "rendered in " << fixed(wall, 3) << " s ("
+        << fixed(script.totalSeconds() / std::max(wall, 1e-9), 3) << " x real time); peak bridge force "
+        << fixed(stats.peakBridgeForce, 6) << " N";
+    if (stats.maxContactTemperature > 0.0)
+        out << ", peak contact temperature " << fixed(stats.maxContactTemperature, 4) << " K above ambient";
+    out << "\n";
+    out << "wrote " << o.out << ": bridge force x " << fixed(scale, 8) << " /N ("
+        << (o.scale ? "scale from --scale" : "peak normalised to -1 dBFS") << "), 1 channel, 32-bit float\n";
+    if (probeFile)
+    {
+        out << "wrote " << *o.probe << ": " << kProbeChannels.size()
+            << " channels, 32-bit float, SI units:\n";
+        for (std::size_t i = 0; i < kProbeChannels.size(); ++i)
+            out << "  " << i + 1 << " " << kProbeChannels[i].name << " [" << kProbeChannels[i].unit << "]\n";
+    }
+    if (stats.runawayRecoveries > 0 || stats.nonFiniteSamples > 0)
+        err << "warning: the voice recovered from a runaway state " << stats.runawayRecoveries << " time(s); "
+            << stats.nonFiniteSamples << " non-finite sample(s) written as 0\n";
+    return kExitOk;
+}
+
+} // namespace rosin::cli

@@ -1,0 +1,96 @@
+// Cost of one voice per sample at 48 kHz for each friction law (cello D string with the cello body), and in
+// the same run STK's Bowed instrument as the peer. Prints ns per sample, the real-time factor and the ratio
+// to STK: machines are noisy, ratios within one process are what can be compared.
+//   build/benchmarks/bench_voice [--benchmark_min_time=1]
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "physics/friction/FrictionLawFactory.h"
+#include "physics/voice/BowedStringVoice.h"
+#ifdef ROSIN_HAVE_STK
+#include <stk/Bowed.h>
+#endif
+
+namespace
+{
+constexpr double kSampleRate = 48000.0;
+constexpr int kBlock = 4800; // samples per benchmark iteration (0.1 s)
+
+void benchVoice(benchmark::State& state, rosin::physics::FrictionModel model)
+{
+    using namespace rosin::physics;
+    VoiceConfig cfg;
+    cfg.string = stringFromCatalogue("cello-D3");
+    cfg.body = celloBody();
+    BowedStringVoice voice;
+    voice.prepare(cfg, makeFrictionLaw(model, galluzzoContact()), kSampleRate);
+    // Settle into steady bowing first, so the timing covers the sustained note a player hears.
+    for (int k = 0; k < 24000; ++k)
+        voice.step({1.0, std::min(0.1, k / kSampleRate), 0.0899, 1.0});
+    double sink = 0.0;
+    for (auto _ : state)
+        for (int k = 0; k < kBlock; ++k)
+            sink += voice.step({1.0, 0.1, 0.0899, 1.0}).bridgeForce;
+    benchmark::DoNotOptimize(sink);
+    state.SetItemsProcessed(state.iterations() * kBlock);
+    state.counters["transverse"] = voice.transverseModeCount();
+    state.counters["torsional"] = voice.torsionalModeCount();
+    state.counters["body"] = voice.bodyModeCount();
+}
+
+#ifdef ROSIN_HAVE_STK
+void benchStkBowed(benchmark::State& state)
+{
+    stk::Stk::setSampleRate(kSampleRate);
+    stk::Bowed bowed(20.0);
+    bowed.noteOn(146.8, 0.8);
+    double sink = 0.0;
+    for (auto _ : state)
+        for (int k = 0; k < kBlock; ++k)
+            sink += bowed.tick();
+    benchmark::DoNotOptimize(sink);
+    state.SetItemsProcessed(state.iterations() * kBlock);
+}
+#endif
+
+/// Collects ns per sample per benchmark while the console reporter prints as usual.
+class RatioReporter : public benchmark::ConsoleReporter
+{
+public:
+    std::map<std::string, double> nsPerSample;
+    void ReportRuns(const std::vector<Run>& runs) override
+    {
+        ConsoleReporter::ReportRuns(runs);
+        for (const auto& r : runs)
+            if (r.run_type == Run::RT_Iteration && r.iterations > 0)
+                nsPerSample[r.benchmark_name()] = r.GetAdjustedRealTime() / kBlock *
+                                                   (r.time_unit == benchmark::kMicrosecond ? 1e3 : 1.0);
+    }
+};
+} // namespace
+
+int main(int argc, char** argv)
+{
+    using rosin::physics::FrictionModel;
+#ifdef ROSIN_HAVE_STK
+    benchmark::RegisterBenchmark("STK_Bowed", benchStkBowed)->Unit(benchmark::kMicrosecond);
+#endif
+    for (auto model : {FrictionModel::Classical, FrictionModel::Reconstructed, FrictionModel::Plastic,
+                       FrictionModel::Viscous, FrictionModel::ModifiedBow, FrictionModel::ModifiedRod})
+        benchmark::RegisterBenchmark((std::string("Rosin_cello_D_body/") + frictionModelName(model)).c_str(),
+                                     [model](benchmark::State& s) { benchVoice(s, model); })
+            ->Unit(benchmark::kMicrosecond);
+    benchmark::Initialize(&argc, argv);
+    RatioReporter reporter;
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    const double stk = reporter.nsPerSample.count("STK_Bowed") ? reporter.nsPerSample["STK_Bowed"] : 0.0;
+    std::printf("\n%-36s %12s %14s %10s\n", "voice", "ns/sample", "x real time", "vs STK");
+    for (const auto& [name, ns] : reporter.nsPerSample)
+        std::printf("%-36s %12.1f %14.0f %10s\n", name.c_str(), ns, 1e9 / (ns * kSampleRate),
+                    stk > 0 ? (std::to_string(ns / stk).substr(0, 5) + "x").c_str() : "n/a");
+    benchmark::Shutdown();
+    return 0;
+}
