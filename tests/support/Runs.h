@@ -57,6 +57,42 @@ inline std::vector<double> slipOnsets(const Trace& t, double fromSeconds = 0.0)
     return onsets;
 }
 
+/// One maximal run of sliding samples.
+struct SlipEpisode
+{
+    double start = 0.0;    ///< s
+    double duration = 0.0; ///< s
+    double peakSpeed = 0.0; ///< largest |v - v_b| in the episode, m/s
+    double bowSpeed = 0.0;  ///< |v_b| at the start, m/s
+    double backwardDuration = 0.0; ///< s during which the string moved backwards (|v - v_b| > |v_b|)
+    /// A flyback: the string moves backwards (|v - v_b| > |v_b|), the slip of Helmholtz motion. Shorter
+    /// partial slips, in which the string only lags the bow, are not flybacks.
+    bool flyback() const { return peakSpeed > bowSpeed; }
+};
+
+/// Slip episodes starting at or after fromSeconds.
+inline std::vector<SlipEpisode> slipEpisodes(const Trace& t, double fromSeconds = 0.0)
+{
+    std::vector<SlipEpisode> episodes;
+    for (std::size_t k = 1; k < t.samples.size(); ++k)
+    {
+        const auto& s = t.samples[k];
+        const bool starts = t.samples[k - 1].sticking && !s.sticking;
+        if (starts && k / t.sampleRate >= fromSeconds)
+            episodes.push_back({k / t.sampleRate, 0.0, 0.0, std::abs(s.bowVelocity)});
+        if (!s.sticking && !episodes.empty() && k / t.sampleRate >= episodes.back().start)
+        {
+            auto& e = episodes.back();
+            e.duration = (k + 1) / t.sampleRate - e.start;
+            const double slide = std::abs(s.bowPointVelocity - s.bowVelocity);
+            e.peakSpeed = std::max(e.peakSpeed, slide);
+            if (slide > std::abs(s.bowVelocity))
+                e.backwardDuration += 1.0 / t.sampleRate;
+        }
+    }
+    return episodes;
+}
+
 /// Time of the first slip, or -1.
 inline double firstSlipTime(const Trace& t)
 {
