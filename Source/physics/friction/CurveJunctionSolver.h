@@ -10,7 +10,9 @@
 // sliding branch while that branch exists. A jump happens only when the followed branch vanishes.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
+#include "FrictionCurves.h"
 #include "FrictionLaw.h"
 
 namespace rosin::physics
@@ -26,18 +28,18 @@ struct CurveJunctionMemory
 namespace detail
 {
 /// Root of a monotone function on [lo, hi] where sign(f(lo)) != sign(f(hi)); safeguarded Newton.
-template <typename F, typename DF>
-double monotoneRoot(F f, DF df, double lo, double hi, double flo) noexcept
+/// fdf(x) returns {f(x), f'(x)} together (one evaluation of the curve's exponentials per iteration).
+template <typename FDF>
+double monotoneRoot(FDF fdf, double lo, double hi, double flo) noexcept
 {
     double x = 0.5 * (lo + hi);
     for (int it = 0; it < 60; ++it)
     {
-        const double fx = f(x);
+        const auto [fx, d] = fdf(x);
         if ((fx < 0.0) == (flo < 0.0))
             lo = x;
         else
             hi = x;
-        const double d = df(x);
         double next = (d != 0.0) ? x - fx / d : 0.5 * (lo + hi);
         if (!(next > lo && next < hi))
             next = 0.5 * (lo + hi);
@@ -58,10 +60,18 @@ JunctionSolution solveCurveJunction(const Curve& curve, const JunctionInput& in,
     const double dvh = in.dvHistory;
     const double side = dvh >= 0.0 ? 1.0 : -1.0;
     const double target = std::abs(dvh);
-    auto phi = [&](double x) { return twoZ * (x - target) + Fb * curve.mu(x); };
+    // phi and its derivatives from one evaluation of the curve.
+    auto phiAndSlope = [&](double x) {
+        const CurvePoint p = curve.at(x);
+        return std::pair{twoZ * (x - target) + Fb * p.mu, twoZ + Fb * p.slope};
+    };
+    auto slopeAndCurvature = [&](double x) {
+        const CurvePoint p = curve.at(x);
+        return std::pair{twoZ + Fb * p.slope, Fb * p.curvature};
+    };
     auto dphi = [&](double x) { return twoZ + Fb * curve.slope(x); };
 
-    const double stickLimit = Fb * curve.mu(0.0);
+    const double stickLimit = Fb * curve.staticMu();
     const bool stickAdmissible = twoZ * target <= stickLimit;
     JunctionSolution out;
     auto stick = [&] {
@@ -79,7 +89,7 @@ JunctionSolution solveCurveJunction(const Curve& curve, const JunctionInput& in,
 
     const double phi0 = twoZ * -target + stickLimit; // phi(0+)
     if (!stickAdmissible)
-        return slide(detail::monotoneRoot(phi, dphi, 0.0, target, phi0)); // exactly one root
+        return slide(detail::monotoneRoot(phiAndSlope, 0.0, target, phi0)); // exactly one root
     // Stick is admissible. Slip roots exist only if phi dips below zero at its minimum.
     const bool wasSlidingThisSide = !memory.sticking && memory.previousDv * side > 0.0;
     if (!wasSlidingThisSide || dphi(0.0) >= 0.0)
@@ -87,11 +97,11 @@ JunctionSolution solveCurveJunction(const Curve& curve, const JunctionInput& in,
     // Minimum of phi: slope(x) = -2Z/Fb, found on [0, target] (dphi increasing).
     double xmin = target;
     if (dphi(target) > 0.0)
-        xmin = detail::monotoneRoot(dphi, [&](double x) { return Fb * curve.curvature(x); }, 0.0, target, dphi(0.0));
-    const double phiMin = phi(xmin);
+        xmin = detail::monotoneRoot(slopeAndCurvature, 0.0, target, dphi(0.0));
+    const double phiMin = phiAndSlope(xmin).first;
     if (phiMin >= 0.0)
         return stick(); // the sliding branch has vanished past tangency: capture
-    return slide(detail::monotoneRoot(phi, dphi, xmin, target, phiMin)); // outer stable root
+    return slide(detail::monotoneRoot(phiAndSlope, xmin, target, phiMin)); // outer stable root
 }
 
 } // namespace rosin::physics

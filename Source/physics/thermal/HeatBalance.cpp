@@ -92,11 +92,16 @@ void HeatBalance::commit(double powerW, double slidingSpeed, double bowForce) no
     // u_m[n+1] = r_m (u_m[n] + c_m tau_m (1 - r_m) Q[n]); the flux deposited now keeps this step's area.
     const double scaledFlux = l.kernelScale * flux;
     double sum = 0.0;
-    for (size_t m = 0; m < history_.size(); ++m)
+    double* __restrict h = history_.data();
+    const double* __restrict r = decay_.data();
+    const double* __restrict w = weight_.data();
+    const int M = static_cast<int>(history_.size());
+#pragma omp simd reduction(+ : sum)
+    for (int m = 0; m < M; ++m)
     {
-        double u = decay_[m] * (history_[m] + weight_[m] * scaledFlux);
+        double u = r[m] * (h[m] + w[m] * scaledFlux);
         u = std::abs(u) < 1e-250 ? 0.0 : u; // keep long silences free of denormals
-        history_[m] = u;
+        h[m] = u;
         sum += u;
     }
     historySum_ = sum;

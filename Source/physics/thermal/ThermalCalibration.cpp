@@ -80,9 +80,35 @@ void ThermalCalibration::build(const ContactParameters& contact, double sampleRa
     }
     // Ambient (v -> 0): finite for tau_y and K Y; eta diverges, so it is held at the first grid value.
     ambientValue_ = q == CalibrationQuantity::Viscosity ? values_.front() : value(0.0);
+    constexpr int kUniformPoints = 8192;
+    uniformIsLog_ = q == CalibrationQuantity::Viscosity;
+    uniformStep_ = temperatures_.back() / (kUniformPoints - 1);
+    uniform_.resize(kUniformPoints);
+    for (int i = 0; i < kUniformPoints; ++i)
+    {
+        const double v = lookupLogLog(i * uniformStep_);
+        uniform_[i] = uniformIsLog_ ? std::log(v) : v;
+    }
 }
 
 double ThermalCalibration::lookup(double T) const noexcept
+{
+    if (uniform_.empty())
+        return 0.0; // not built: no friction rather than undefined behaviour
+    if (!(T > 0.0)) // also NaN
+        return ambientValue_;
+    const double x = T / uniformStep_;
+    if (x < 1.0)
+        return lookupLogLog(T); // the first cell, where the viscosity changes by decades, keeps the exact table
+    if (x >= static_cast<double>(uniform_.size() - 1))
+        return values_.back();
+    const auto i = static_cast<std::size_t>(x);
+    const double frac = x - static_cast<double>(i);
+    const double y = uniform_[i] + frac * (uniform_[i + 1] - uniform_[i]);
+    return uniformIsLog_ ? std::exp(y) : y;
+}
+
+double ThermalCalibration::lookupLogLog(double T) const noexcept
 {
     if (temperatures_.empty())
         return 0.0; // not built: no friction rather than undefined behaviour

@@ -68,6 +68,12 @@ class ThermalCalibration
   private:
     CalibrationQuantity quantity_ = CalibrationQuantity::YieldStress;
     std::vector<double> speeds_, temperatures_, values_, logT_, logValue_;
+    // The same table resampled on a uniform temperature grid, so the per-sample lookup is one multiply and a
+    // linear interpolation (the viscosity, which spans nine decades, is stored and interpolated as a log).
+    std::vector<double> uniform_;
+    double uniformStep_ = 1.0;
+    bool uniformIsLog_ = false;
+    double lookupLogLog(double T) const noexcept;
     double ambientValue_ = 0.0;
     bool truncated_ = false;
 };
