@@ -8,6 +8,7 @@
 #include <new>
 
 #include "physics/friction/CurveFrictionLaw.h"
+#include "physics/friction/FrictionLawFactory.h"
 #include "physics/voice/BowedStringVoice.h"
 #include "support/TestLaws.h"
 
@@ -75,5 +76,46 @@ TEST(RealTimeSafety, StepAllocatesNothingWithCurveLaws)
             voice.prepare(cfg, std::make_unique<ReconstructedFrictionLaw>(ReconstructedCurve{}, "reconstructed"),
                           48000.0);
         EXPECT_EQ(rosin::test::allocationsDuringSteps(voice), 0) << "law " << law;
+    }
+}
+
+TEST(RealTimeSafety, StepAllocatesNothingWithEveryLaw)
+{
+    using namespace rosin::physics;
+    VoiceConfig cfg;
+    cfg.string = stringFromCatalogue("cello-D3");
+    cfg.body = celloBody();
+    for (const auto& name : frictionModelNames())
+    {
+        BowedStringVoice voice;
+        voice.prepare(cfg, makeFrictionLaw(frictionModelFromName(name), galluzzoContact()), 48000.0);
+        EXPECT_EQ(rosin::test::allocationsDuringSteps(voice), 0) << name;
+    }
+}
+
+TEST(RealTimeSafety, OutputStaysFiniteUnderWildInput)
+{
+    using namespace rosin::physics;
+    VoiceConfig cfg;
+    cfg.string = stringFromCatalogue("cello-D3");
+    cfg.body = celloBody();
+    for (const auto& name : frictionModelNames())
+    {
+        BowedStringVoice voice;
+        voice.prepare(cfg, makeFrictionLaw(frictionModelFromName(name), galluzzoContact()), 48000.0);
+        std::uint32_t state = 12345;
+        auto uniform = [&] { return (state = state * 1664525u + 1013904223u) / 4294967296.0; };
+        double worst = 0.0, force = 1.0, speed = 0.0, beta = 0.1, finger = 1.0;
+        for (int k = 0; k < 48000; ++k)
+        {
+            // Every input jumps at random within and beyond its range, every 64 samples.
+            if (k % 64 == 0)
+                force = 25 * uniform() - 2, speed = 10 * uniform() - 5, beta = uniform() - 0.2, finger = 1.5 * uniform();
+            const auto out = voice.step({force, speed, beta, finger});
+            ASSERT_TRUE(std::isfinite(out.bridgeForce)) << name << " at sample " << k;
+            worst = std::max(worst, std::abs(out.bridgeForce));
+        }
+        EXPECT_LT(worst, 1e4) << name;
+        std::printf("[figure] wild input, %s: largest |bridge force| %.1f N\n", name.c_str(), worst);
     }
 }
