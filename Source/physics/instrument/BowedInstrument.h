@@ -1,0 +1,60 @@
+#pragma once
+// Several bowed strings on one instrument (a cello's C2 G2 D3 A3, a violin's G3 D4 A4 E5), each with its own
+// bow input and friction law, all answering at the same bridge. This is what the plugin and the offline
+// MIDI renderer drive: one object, one step per sample for all strings.
+//
+// Current coupling: each string sits on its own copy of the body (a body per string), so strings do not yet
+// excite one another through the bridge (no sympathetic resonance). The output is the sum of the strings'
+// bridge forces. Real-time contract as for BowedStringVoice: prepare() allocates; reset() and step() never
+// allocate, lock or call the system.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "../friction/FrictionLawFactory.h"
+#include "../voice/BowedStringVoice.h"
+
+namespace rosin::physics
+{
+
+struct InstrumentConfig
+{
+    std::string name = "cello";                  ///< "cello", "violin", or a preset's name
+    std::vector<StringParameters> strings;       ///< lowest to highest
+    BodyParameters body;                         ///< shared bridge admittance (rigid when empty)
+    bool torsion = true;
+    bool bendingStiffness = true;
+    FrictionModel friction = FrictionModel::Plastic;
+    ContactParameters contact = galluzzoContact();
+};
+
+/// A cello: C2 G2 D3 A3 (StringParameters catalogue) on celloBody().
+InstrumentConfig celloInstrument();
+/// A violin: G3 D4 A4 E5 (the instrument E5 tuned to 659.26 Hz) on violinBody().
+InstrumentConfig violinInstrument();
+
+class BowedInstrument
+{
+public:
+    /// Off the audio thread.
+    void prepare(const InstrumentConfig& config, double sampleRate);
+    void reset() noexcept;
+    /// Advance all strings one sample. `inputs` and `outputs` hold stringCount() entries. Returns the total
+    /// bridge force (N), the instrument's audio output.
+    double step(const BowInput* inputs, VoiceSample* outputs) noexcept;
+
+    int stringCount() const noexcept { return static_cast<int>(voices_.size()); }
+    const InstrumentConfig& config() const noexcept { return config_; }
+    const BowedStringVoice& voice(int i) const noexcept { return *voices_[static_cast<std::size_t>(i)]; }
+    /// Open-string fundamental (Hz) of string i.
+    double openFrequency(int i) const noexcept;
+    /// True if any string reset itself after a runaway during the last step.
+    bool recoveredFromRunaway() const noexcept { return recovered_; }
+
+private:
+    InstrumentConfig config_;
+    std::vector<std::unique_ptr<BowedStringVoice>> voices_;
+    bool recovered_ = false;
+};
+
+} // namespace rosin::physics
