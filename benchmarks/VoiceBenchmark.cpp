@@ -59,15 +59,15 @@ void benchStkBowed(benchmark::State& state)
 /// Collects ns per sample per benchmark while the console reporter prints as usual.
 class RatioReporter : public benchmark::ConsoleReporter
 {
-public:
+  public:
     std::map<std::string, double> nsPerSample;
     void ReportRuns(const std::vector<Run>& runs) override
     {
         ConsoleReporter::ReportRuns(runs);
         for (const auto& r : runs)
             if (r.run_type == Run::RT_Iteration && r.iterations > 0)
-                nsPerSample[r.benchmark_name()] = r.GetAdjustedRealTime() / kBlock *
-                                                   (r.time_unit == benchmark::kMicrosecond ? 1e3 : 1.0);
+                nsPerSample[r.benchmark_name()] =
+                    r.GetAdjustedRealTime() / kBlock * (r.time_unit == benchmark::kMicrosecond ? 1e3 : 1.0);
     }
 };
 } // namespace

@@ -37,8 +37,8 @@ double decayRate(const std::vector<double>& x, double f)
     const std::size_t win = static_cast<std::size_t>(0.25 * fs), nfft = 1 << 16;
     const double bin = fs / nfft;
     const auto a1 = test::findPeak(test::hannSpectrum(x, 0, win, nfft), bin, f - 30.0, f + 30.0);
-    const auto a2 = test::findPeak(test::hannSpectrum(x, static_cast<std::size_t>(fs), win, nfft), bin, f - 30.0,
-                                   f + 30.0);
+    const auto a2 = test::findPeak(test::hannSpectrum(x, static_cast<std::size_t>(fs), win, nfft), bin,
+                                   f - 30.0, f + 30.0);
     return std::log(a1.magnitude / a2.magnitude);
 }
 } // namespace
@@ -68,7 +68,8 @@ TEST(BodyCoupling, PartialsDecayFasterByTheBodysLossFactor)
     EXPECT_LT(worst, 0.15);
     EXPECT_EQ(extraAtLargest, extraMax);       // strongest admittance, fastest extra decay
     EXPECT_GT(extraMax, 20.0 * smallestExtra); // and a partial in an admittance gap barely changes
-    std::printf("[figure] body-induced decay vs 2 Z0 Re Y/(pi n), partials 2-12: worst error %.1f %%; extra decay "
-                "%.3f..%.3f 1/s\n",
-                100.0 * worst, smallestExtra, extraMax);
+    std::printf(
+        "[figure] body-induced decay vs 2 Z0 Re Y/(pi n), partials 2-12: worst error %.1f %%; extra decay "
+        "%.3f..%.3f 1/s\n",
+        100.0 * worst, smallestExtra, extraMax);
 }

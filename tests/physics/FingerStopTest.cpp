@@ -40,8 +40,9 @@ TEST(FingerStop, ShorterStringWithStoppedDamping)
         const double gap = std::min(2.0, 2.0 / sigma);
         const auto k2 = static_cast<std::size_t>(gap * fs);
         const double measured =
-            std::log(test::findPeak(test::hannSpectrum(x, 0, win, nfft), fs / nfft, fn - 40, fn + 40).magnitude /
-                     test::findPeak(test::hannSpectrum(x, k2, win, nfft), fs / nfft, fn - 40, fn + 40).magnitude) /
+            std::log(
+                test::findPeak(test::hannSpectrum(x, 0, win, nfft), fs / nfft, fn - 40, fn + 40).magnitude /
+                test::findPeak(test::hannSpectrum(x, k2, win, nfft), fs / nfft, fn - 40, fn + 40).magnitude) /
             (static_cast<double>(k2) / fs);
         worstDecay = std::max(worstDecay, std::abs(measured / sigma - 1.0));
         // The open-string law would be clearly slower: the stopped damping is really applied.
@@ -49,6 +50,6 @@ TEST(FingerStop, ShorterStringWithStoppedDamping)
     }
     EXPECT_LT(worstCents, 1.0);
     EXPECT_LT(worstDecay, 0.05);
-    std::printf("[figure] finger stop at 2/3: worst partial error %.4f cents, worst decay error %.2f %%\n", worstCents,
-                100.0 * worstDecay);
+    std::printf("[figure] finger stop at 2/3: worst partial error %.4f cents, worst decay error %.2f %%\n",
+                worstCents, 100.0 * worstDecay);
 }

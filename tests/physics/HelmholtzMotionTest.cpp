@@ -49,16 +49,16 @@ HelmholtzFigures analyse(const test::Trace& t, double f0, double fromSeconds)
     const double P = 1.0 / f0;
     for (double w = onsets.front() - 0.5 * P; w + P < onsets.back(); w += P)
     {
-        const int n = static_cast<int>(std::count_if(onsets.begin(), onsets.end(),
-                                                     [&](double x) { return x >= w && x < w + P; }));
+        const int n = static_cast<int>(
+            std::count_if(onsets.begin(), onsets.end(), [&](double x) { return x >= w && x < w + P; }));
         h.maxSlipsPerPeriod = std::max(h.maxSlipsPerPeriod, n);
         h.minSlipsPerPeriod = std::min(h.minSlipsPerPeriod, n);
     }
     return h;
 }
 
-void expectHelmholtzWith(const VoiceConfig& cfg, std::unique_ptr<FrictionLaw> law, const char* name, double force,
-                         double beta)
+void expectHelmholtzWith(const VoiceConfig& cfg, std::unique_ptr<FrictionLaw> law, const char* name,
+                         double force, double beta)
 {
     const double speed = 0.05;
     const auto t = test::bowSteady(cfg, std::move(law), 48000.0, force, speed, beta, 1.5);
@@ -84,10 +84,10 @@ void expectHelmholtz(Curve curve, const char* name, double force, double beta, b
 } // namespace
 
 // The cello D string with the cello body, bowed at 0.05 m/s and beta = 0.1 (seed 001's Schelleng grid speed).
-// Schelleng's maximum force 2 Z0 vb / (beta (mu_s - mu_d)) is 0.64 N for the classical curve and 1.37 N for the
-// reconstructed one (reference §6.1). Near the limits the string is bistable (Helmholtz or double slipping,
-// decided by the start: seed 001 calls such sensitive dependence genuine); each force below sits inside the
-// region that a scan over 0.2-2 N found for its law.
+// Schelleng's maximum force 2 Z0 vb / (beta (mu_s - mu_d)) is 0.64 N for the classical curve and 1.37 N for
+// the reconstructed one (reference §6.1). Near the limits the string is bistable (Helmholtz or double
+// slipping, decided by the start: seed 001 calls such sensitive dependence genuine); each force below sits
+// inside the region that a scan over 0.2-2 N found for its law.
 TEST(HelmholtzMotion, ClassicalCurve)
 {
     expectHelmholtz<ClassicalFrictionLaw>(ClassicalCurve{}, "classical", 0.3, 0.1, true);

@@ -24,7 +24,8 @@ std::vector<double> impulseResponse(const VoiceConfig& cfg, double seconds, bool
     voice.prepare(cfg, std::make_unique<test::PrescribedForceLaw>(std::vector<double>{1.0}), fs);
     std::vector<double> v(static_cast<std::size_t>(seconds * fs));
     for (auto& x : v)
-        x = surface ? voice.step({0.0, 0.0, beta, 1.0}).bowPointVelocity : voice.step({0.0, 0.0, beta, 1.0}).bridgeForce;
+        x = surface ? voice.step({0.0, 0.0, beta, 1.0}).bowPointVelocity
+                    : voice.step({0.0, 0.0, beta, 1.0}).bridgeForce;
     return v;
 }
 
@@ -73,7 +74,7 @@ TEST(LinearString, ModeDecayRatesFollowLossLaw)
     {
         const double fn = n * f0 * std::sqrt(1.0 + B * n * n);
         const double sigma = 0.5 * s.lossFactor(n, s.length, false) * 2.0 * M_PI * fn; // amplitude decay, 1/s
-        const double gap = std::min(3.0, 2.0 / sigma);                                  // about e^-2 between windows
+        const double gap = std::min(3.0, 2.0 / sigma); // about e^-2 between windows
         const std::size_t k2 = static_cast<std::size_t>(gap * fs);
         const auto a1 = test::findPeak(test::hannSpectrum(v, 0, win, nfft), bin, fn - 40, fn + 40);
         const auto a2 = test::findPeak(test::hannSpectrum(v, k2, win, nfft), bin, fn - 40, fn + 40);

@@ -30,12 +30,14 @@ double stiffStringCompliance(const StringParameters& s, double beta)
     for (int n = 1; n <= 100000; ++n)
     {
         const double k = n * M_PI / s.length;
-        c += 2.0 * std::pow(std::sin(n * M_PI * beta), 2) / (s.length * (s.tension * k * k + s.bendingStiffness * k * k * k * k));
+        c += 2.0 * std::pow(std::sin(n * M_PI * beta), 2) /
+             (s.length * (s.tension * k * k + s.bendingStiffness * k * k * k * k));
     }
     return c;
 }
 
-PreSlipRun runGuettler(std::unique_ptr<FrictionLaw> law, bool torsion, bool bending = false, double fs = 48000.0)
+PreSlipRun runGuettler(std::unique_ptr<FrictionLaw> law, bool torsion, bool bending = false,
+                       double fs = 48000.0)
 {
     VoiceConfig cfg;
     cfg.string = stringFromCatalogue("cello-D3");
@@ -72,7 +74,8 @@ PreSlipRun runGuettler(std::unique_ptr<FrictionLaw> law, bool torsion, bool bend
     {
         const double y = ratio * a * t[i] * t[i] / 2.0;
         // Ideal string: f_br = P y / (beta L) (seed 002 eq. 4). Stiff string: f_br = (1 - beta) y / C_static.
-        const double expected = bending ? (1.0 - beta) * y / stiffStringCompliance(s, beta) : s.tension * y / (beta * s.length);
+        const double expected =
+            bending ? (1.0 - beta) * y / stiffStringCompliance(s, beta) : s.tension * y / (beta * s.length);
         run.worstRelativeError = std::max(run.worstRelativeError, std::abs(F[i] / expected - 1.0));
     }
     return run;
@@ -81,7 +84,8 @@ PreSlipRun runGuettler(std::unique_ptr<FrictionLaw> law, bool torsion, bool bend
 
 TEST(PreSlip, RigidStickingFollowsStaticParabolaWithoutTorsion)
 {
-    const auto run = runGuettler(std::make_unique<ClassicalFrictionLaw>(ClassicalCurve{}, "classical"), false);
+    const auto run =
+        runGuettler(std::make_unique<ClassicalFrictionLaw>(ClassicalCurve{}, "classical"), false);
     ASSERT_GT(run.firstSlipTime, 0.0);
     EXPECT_LT(run.worstRelativeError, 0.02);
     std::printf("[figure] pre-slip parabola, ideal string, no torsion: worst error %.2f %%\n",
@@ -92,7 +96,8 @@ TEST(PreSlip, RigidStickingFollowsStaticParabolaWithoutTorsion)
 // at beta = 0.09; the rise then follows the stiff string's own static compliance.
 TEST(PreSlip, StiffStringFollowsItsStaticCompliance)
 {
-    const auto run = runGuettler(std::make_unique<ClassicalFrictionLaw>(ClassicalCurve{}, "classical"), false, true);
+    const auto run =
+        runGuettler(std::make_unique<ClassicalFrictionLaw>(ClassicalCurve{}, "classical"), false, true);
     ASSERT_GT(run.firstSlipTime, 0.0);
     EXPECT_LT(run.worstRelativeError, 0.02);
     std::printf("[figure] pre-slip parabola, stiff string, no torsion: worst error %.2f %%\n",
@@ -110,7 +115,8 @@ TEST(PreSlip, TorsionReducesTransverseDisplacementByStiffnessRatio)
 
 TEST(PreSlip, FirstSlipAtTheCurvesStaticCoefficient)
 {
-    const auto classical = runGuettler(std::make_unique<ClassicalFrictionLaw>(ClassicalCurve{}, "classical"), true);
+    const auto classical =
+        runGuettler(std::make_unique<ClassicalFrictionLaw>(ClassicalCurve{}, "classical"), true);
     const auto reconstructed =
         runGuettler(std::make_unique<ReconstructedFrictionLaw>(ReconstructedCurve{}, "reconstructed"), true);
     EXPECT_NEAR(classical.muStatic, 1.2, 0.02 * 1.2);
@@ -118,5 +124,6 @@ TEST(PreSlip, FirstSlipAtTheCurvesStaticCoefficient)
     // Slip later with the higher static coefficient: the parabola takes longer to reach it.
     EXPECT_GT(classical.firstSlipTime, reconstructed.firstSlipTime);
     std::printf("[figure] first-slip mu_s: classical %.4f (t=%.4f s), reconstructed %.4f (t=%.4f s)\n",
-                classical.muStatic, classical.firstSlipTime, reconstructed.muStatic, reconstructed.firstSlipTime);
+                classical.muStatic, classical.firstSlipTime, reconstructed.muStatic,
+                reconstructed.firstSlipTime);
 }

@@ -26,8 +26,14 @@ void* operator new(std::size_t size)
         return p;
     throw std::bad_alloc();
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p) noexcept
+{
+    std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept
+{
+    std::free(p);
+}
 
 namespace rosin::test
 {
@@ -55,7 +61,7 @@ long allocationsDuringSteps(physics::BowedStringVoice& voice)
 TEST(RealTimeSafety, CounterSeesAllocations)
 {
     rosin::test::AllocationCounter counter;
-    auto* p = new int(3); // the counter must notice this, or the other tests prove nothing
+    auto* p = new int(3);                   // the counter must notice this, or the other tests prove nothing
     asm volatile("" : : "r"(p) : "memory"); // keep the compiler from eliding the allocation
     delete p;
     EXPECT_EQ(counter.count(), 1);
@@ -71,9 +77,11 @@ TEST(RealTimeSafety, StepAllocatesNothingWithCurveLaws)
     {
         BowedStringVoice voice;
         if (law == 0)
-            voice.prepare(cfg, std::make_unique<ClassicalFrictionLaw>(ClassicalCurve{}, "classical"), 48000.0);
+            voice.prepare(cfg, std::make_unique<ClassicalFrictionLaw>(ClassicalCurve{}, "classical"),
+                          48000.0);
         else
-            voice.prepare(cfg, std::make_unique<ReconstructedFrictionLaw>(ReconstructedCurve{}, "reconstructed"),
+            voice.prepare(cfg,
+                          std::make_unique<ReconstructedFrictionLaw>(ReconstructedCurve{}, "reconstructed"),
                           48000.0);
         EXPECT_EQ(rosin::test::allocationsDuringSteps(voice), 0) << "law " << law;
     }
@@ -110,7 +118,8 @@ TEST(RealTimeSafety, OutputStaysFiniteUnderWildInput)
         {
             // Every input jumps at random within and beyond its range, every 64 samples.
             if (k % 64 == 0)
-                force = 25 * uniform() - 2, speed = 10 * uniform() - 5, beta = uniform() - 0.2, finger = 1.5 * uniform();
+                force = 25 * uniform() - 2, speed = 10 * uniform() - 5, beta = uniform() - 0.2,
+                finger = 1.5 * uniform();
             const auto out = voice.step({force, speed, beta, finger});
             ASSERT_TRUE(std::isfinite(out.bridgeForce)) << name << " at sample " << k;
             worst = std::max(worst, std::abs(out.bridgeForce));

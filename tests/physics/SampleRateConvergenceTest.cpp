@@ -20,8 +20,9 @@ VoiceConfig celloD()
 
 double helmholtzPeriod(double fs)
 {
-    const auto t = test::bowSteady(celloD(), std::make_unique<ClassicalFrictionLaw>(ClassicalCurve{}, "classical"),
-                                   fs, 0.4, 0.05, 0.1, 1.5);
+    const auto t =
+        test::bowSteady(celloD(), std::make_unique<ClassicalFrictionLaw>(ClassicalCurve{}, "classical"), fs,
+                        0.4, 0.05, 0.1, 1.5);
     const auto onsets = test::slipOnsets(t, 1.0);
     return (onsets.back() - onsets.front()) / (onsets.size() - 1);
 }
@@ -30,15 +31,18 @@ double helmholtzPeriod(double fs)
 TEST(SampleRateConvergence, FirstSlipTime)
 {
     // Guettler's gesture of the seed's rig: a = 1.56 m/s^2, 1 N, beta = 0.0899.
-    const auto slow = test::bowAccelerating(celloD(), std::make_unique<ClassicalFrictionLaw>(ClassicalCurve{}, "c"),
-                                            44100.0, 1.0, 1.56, 0.0899, 0.2);
-    const auto fast = test::bowAccelerating(celloD(), std::make_unique<ClassicalFrictionLaw>(ClassicalCurve{}, "c"),
-                                            96000.0, 1.0, 1.56, 0.0899, 0.2);
+    const auto slow =
+        test::bowAccelerating(celloD(), std::make_unique<ClassicalFrictionLaw>(ClassicalCurve{}, "c"),
+                              44100.0, 1.0, 1.56, 0.0899, 0.2);
+    const auto fast =
+        test::bowAccelerating(celloD(), std::make_unique<ClassicalFrictionLaw>(ClassicalCurve{}, "c"),
+                              96000.0, 1.0, 1.56, 0.0899, 0.2);
     const double t1 = test::firstSlipTime(slow), t2 = test::firstSlipTime(fast);
     ASSERT_GT(t1, 0.0);
     ASSERT_GT(t2, 0.0);
     EXPECT_NEAR(t1 / t2, 1.0, 0.01);
-    std::printf("[figure] first slip: %.5f s at 44.1 kHz, %.5f s at 96 kHz (%.3f %%)\n", t1, t2, 100 * (t1 / t2 - 1));
+    std::printf("[figure] first slip: %.5f s at 44.1 kHz, %.5f s at 96 kHz (%.3f %%)\n", t1, t2,
+                100 * (t1 / t2 - 1));
 }
 
 TEST(SampleRateConvergence, HelmholtzPeriod)

@@ -33,8 +33,8 @@ struct FirstSlip
 
 FirstSlip guettlerFirstSlip(FrictionModel model, const ContactParameters& contact, double force)
 {
-    const auto t = test::bowAccelerating(galluzzoRig(), makeFrictionLaw(model, contact), 48000.0, force, 1.0, kBeta,
-                                         0.3);
+    const auto t = test::bowAccelerating(galluzzoRig(), makeFrictionLaw(model, contact), 48000.0, force, 1.0,
+                                         kBeta, 0.3);
     std::size_t k0 = 0;
     while (k0 < t.samples.size() && t.samples[k0].sticking)
         ++k0;
@@ -47,7 +47,10 @@ FirstSlip guettlerFirstSlip(FrictionModel model, const ContactParameters& contac
     return r;
 }
 
-double areaPerNewton(const ContactGeometry& g) { return g.radius * g.radius / g.referenceForce; }
+double areaPerNewton(const ContactGeometry& g)
+{
+    return g.radius * g.radius / g.referenceForce;
+}
 } // namespace
 
 TEST(ThermalVoice, PlasticFirstSlipAtCalibratedStaticCoefficient)
@@ -59,8 +62,9 @@ TEST(ThermalVoice, PlasticFirstSlipAtCalibratedStaticCoefficient)
     contact.calibration.radius = 0.433e-3; // seed 001 Fig. 14: the radius at which the two rigs agree
     const auto matched = guettlerFirstSlip(FrictionModel::Plastic, contact, 1.0);
     EXPECT_NEAR(matched.muStatic, 1.2, 0.02 * 1.2);
-    std::printf("[figure] plastic first slip mu_s: %.4f (expected %.4f); with 0.433 mm calibration %.4f (1.2)\n",
-                base.muStatic, expected, matched.muStatic);
+    std::printf(
+        "[figure] plastic first slip mu_s: %.4f (expected %.4f); with 0.433 mm calibration %.4f (1.2)\n",
+        base.muStatic, expected, matched.muStatic);
 }
 
 TEST(ThermalVoice, PlasticNeverJumpsAtFirstSlip)
@@ -77,15 +81,16 @@ TEST(ThermalVoice, ModifiedLawJumpsAtHighForceOnly)
     EXPECT_GT(high.jump, 0.1);
     // Static limit K Y(ambient) h(0) = mu_steady(0) = 0.2 * 0.011^-0.4 (seed 002 eqs. 9, 11).
     EXPECT_NEAR(high.muStatic, 0.2 * std::pow(0.011, -0.4), 0.02 * 1.215);
-    std::printf("[figure] modified-bow first-slip jump / N: %.4f at 0.3 N, %.4f at 3 N; mu_s %.4f\n", low.jump,
-                high.jump, high.muStatic);
+    std::printf("[figure] modified-bow first-slip jump / N: %.4f at 0.3 N, %.4f at 3 N; mu_s %.4f\n",
+                low.jump, high.jump, high.muStatic);
 }
 
 TEST(ThermalVoice, ViscousLawSlipsForwardAndPlasticNever)
 {
-    auto maxForwardSlip = [](FrictionModel model) {
-        const auto t = test::bowSteady(galluzzoRig(), makeFrictionLaw(model, galluzzoContact()), 48000.0, 1.0, 0.042,
-                                       0.1, 0.5);
+    auto maxForwardSlip = [](FrictionModel model)
+    {
+        const auto t = test::bowSteady(galluzzoRig(), makeFrictionLaw(model, galluzzoContact()), 48000.0, 1.0,
+                                       0.042, 0.1, 0.5);
         double m = -1e9;
         for (const auto& s : t.samples)
             m = std::max(m, s.bowPointVelocity - s.bowVelocity);
@@ -95,5 +100,6 @@ TEST(ThermalVoice, ViscousLawSlipsForwardAndPlasticNever)
     const double plastic = maxForwardSlip(FrictionModel::Plastic);
     EXPECT_GT(viscous, 0.01); // the string overtakes the bow by more than 1 cm/s at some instant
     EXPECT_LE(plastic, 1e-9);
-    std::printf("[figure] largest forward slip (v - v_b): viscous %.3f m/s, plastic %.2e m/s\n", viscous, plastic);
+    std::printf("[figure] largest forward slip (v - v_b): viscous %.3f m/s, plastic %.2e m/s\n", viscous,
+                plastic);
 }

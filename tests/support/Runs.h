@@ -16,8 +16,8 @@ struct Trace
     std::vector<physics::VoiceSample> samples;
 };
 
-/// Bow at constant speed `speed` (m/s) with force `force` (N) at `beta` for `seconds`, reaching the speed by a
-/// linear ramp over `rampSeconds` (a player's or a bowing machine's start; an instantaneous step is not).
+/// Bow at constant speed `speed` (m/s) with force `force` (N) at `beta` for `seconds`, reaching the speed by
+/// a linear ramp over `rampSeconds` (a player's or a bowing machine's start; an instantaneous step is not).
 inline Trace bowSteady(const physics::VoiceConfig& cfg, std::unique_ptr<physics::FrictionLaw> law, double fs,
                        double force, double speed, double beta, double seconds, double rampSeconds = 0.1)
 {
@@ -28,15 +28,16 @@ inline Trace bowSteady(const physics::VoiceConfig& cfg, std::unique_ptr<physics:
     t.samples.reserve(n);
     for (std::size_t k = 0; k < n; ++k)
     {
-        const double ramp = rampSeconds > 0.0 ? std::min(1.0, static_cast<double>(k) / (rampSeconds * fs)) : 1.0;
+        const double ramp =
+            rampSeconds > 0.0 ? std::min(1.0, static_cast<double>(k) / (rampSeconds * fs)) : 1.0;
         t.samples.push_back(voice.step({force, speed * ramp, beta, 1.0}));
     }
     return t;
 }
 
 /// Bow from rest with constant acceleration `accel` (m/s^2).
-inline Trace bowAccelerating(const physics::VoiceConfig& cfg, std::unique_ptr<physics::FrictionLaw> law, double fs,
-                             double force, double accel, double beta, double seconds)
+inline Trace bowAccelerating(const physics::VoiceConfig& cfg, std::unique_ptr<physics::FrictionLaw> law,
+                             double fs, double force, double accel, double beta, double seconds)
 {
     physics::BowedStringVoice voice;
     voice.prepare(cfg, std::move(law), fs);
@@ -60,10 +61,10 @@ inline std::vector<double> slipOnsets(const Trace& t, double fromSeconds = 0.0)
 /// One maximal run of sliding samples.
 struct SlipEpisode
 {
-    double start = 0.0;    ///< s
-    double duration = 0.0; ///< s
-    double peakSpeed = 0.0; ///< largest |v - v_b| in the episode, m/s
-    double bowSpeed = 0.0;  ///< |v_b| at the start, m/s
+    double start = 0.0;            ///< s
+    double duration = 0.0;         ///< s
+    double peakSpeed = 0.0;        ///< largest |v - v_b| in the episode, m/s
+    double bowSpeed = 0.0;         ///< |v_b| at the start, m/s
     double backwardDuration = 0.0; ///< s during which the string moved backwards (|v - v_b| > |v_b|)
     /// A flyback: the string moves backwards (|v - v_b| > |v_b|), the slip of Helmholtz motion. Shorter
     /// partial slips, in which the string only lags the bow, are not flybacks.

@@ -48,6 +48,9 @@ inline Peak findPeak(const std::vector<double>& mag, double binHz, double fLo, d
     return {(best + delta) * binHz, std::exp(b - 0.25 * (a - c) * delta)};
 }
 
-inline double cents(double f, double reference) { return 1200.0 * std::log2(f / reference); }
+inline double cents(double f, double reference)
+{
+    return 1200.0 * std::log2(f / reference);
+}
 
 } // namespace rosin::test

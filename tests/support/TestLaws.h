@@ -11,7 +11,7 @@ namespace rosin::test
 /// source, not a friction contact): f[k] = forces[k], dv = dvHistory + f / 2Z.
 class PrescribedForceLaw final : public physics::FrictionLaw
 {
-public:
+  public:
     explicit PrescribedForceLaw(std::vector<double> forces) : forces_(std::move(forces)) {}
     void prepare(double) override { reset(); }
     void reset() noexcept override { k_ = 0; }
@@ -24,7 +24,7 @@ public:
     double staticCoefficient(double) const noexcept override { return 0.0; }
     const char* name() const noexcept override { return "prescribed-force"; }
 
-private:
+  private:
     std::vector<double> forces_;
     std::size_t k_ = 0;
 };

@@ -69,7 +69,8 @@ double skeletonRealAdmittance(const StatisticalRecipe& r, double frequencyHz)
 /// One mode per 1/12 octave (spacing df = 5.9 % of f) carries the mean admittance of the modes it replaces
 /// (1/m = 4 Re Y_skel df, the same rule as <1/m> above with n_f = 1/df), damped so that neighbouring band
 /// modes overlap (eta >= df/f): a smooth skeleton with about 40 modes from 1 to 10 kHz instead of 600.
-void appendBandModes(std::vector<BodyMode>& modes, const StatisticalRecipe& r, double fromHz, double maxFrequencyHz)
+void appendBandModes(std::vector<BodyMode>& modes, const StatisticalRecipe& r, double fromHz,
+                     double maxFrequencyHz)
 {
     const double step = std::pow(2.0, 1.0 / 12.0);
     for (double f = fromHz * std::sqrt(step); f < maxFrequencyHz; f *= step)

@@ -7,10 +7,9 @@
 namespace rosin::physics
 {
 
-template <typename Curve>
-class CurveFrictionLaw final : public FrictionLaw
+template <typename Curve> class CurveFrictionLaw final : public FrictionLaw
 {
-public:
+  public:
     CurveFrictionLaw(Curve curve, const char* lawName) : curve_(curve), name_(lawName) {}
     void prepare(double) override { reset(); }
     void reset() noexcept override { memory_ = {}; }
@@ -21,7 +20,7 @@ public:
     double staticCoefficient(double) const noexcept override { return curve_.mu(0.0); }
     const char* name() const noexcept override { return name_; }
 
-private:
+  private:
     Curve curve_;
     const char* name_;
     CurveJunctionMemory memory_;

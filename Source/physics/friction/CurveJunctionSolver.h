@@ -29,8 +29,7 @@ namespace detail
 {
 /// Root of a monotone function on [lo, hi] where sign(f(lo)) != sign(f(hi)); safeguarded Newton.
 /// fdf(x) returns {f(x), f'(x)} together (one evaluation of the curve's exponentials per iteration).
-template <typename FDF>
-double monotoneRoot(FDF fdf, double lo, double hi, double flo) noexcept
+template <typename FDF> double monotoneRoot(FDF fdf, double lo, double hi, double flo) noexcept
 {
     double x = 0.5 * (lo + hi);
     for (int it = 0; it < 60; ++it)
@@ -53,7 +52,8 @@ double monotoneRoot(FDF fdf, double lo, double hi, double flo) noexcept
 
 /// Solve one sample of the junction for a friction curve `curve` (mu(x), slope(x), x = |dv| >= 0).
 template <typename Curve>
-JunctionSolution solveCurveJunction(const Curve& curve, const JunctionInput& in, CurveJunctionMemory& memory) noexcept
+JunctionSolution solveCurveJunction(const Curve& curve, const JunctionInput& in,
+                                    CurveJunctionMemory& memory) noexcept
 {
     const double twoZ = in.loadSlope;
     const double Fb = std::max(in.bowForce, 0.0);
@@ -61,11 +61,13 @@ JunctionSolution solveCurveJunction(const Curve& curve, const JunctionInput& in,
     const double side = dvh >= 0.0 ? 1.0 : -1.0;
     const double target = std::abs(dvh);
     // phi and its derivatives from one evaluation of the curve.
-    auto phiAndSlope = [&](double x) {
+    auto phiAndSlope = [&](double x)
+    {
         const CurvePoint p = curve.at(x);
         return std::pair{twoZ * (x - target) + Fb * p.mu, twoZ + Fb * p.slope};
     };
-    auto slopeAndCurvature = [&](double x) {
+    auto slopeAndCurvature = [&](double x)
+    {
         const CurvePoint p = curve.at(x);
         return std::pair{twoZ + Fb * p.slope, Fb * p.curvature};
     };
@@ -74,12 +76,14 @@ JunctionSolution solveCurveJunction(const Curve& curve, const JunctionInput& in,
     const double stickLimit = Fb * curve.staticMu();
     const bool stickAdmissible = twoZ * target <= stickLimit;
     JunctionSolution out;
-    auto stick = [&] {
+    auto stick = [&]
+    {
         out = {0.0, -twoZ * dvh, true};
         memory = {true, 0.0};
         return out;
     };
-    auto slide = [&](double x) {
+    auto slide = [&](double x)
+    {
         out = {side * x, -side * Fb * curve.mu(x), false};
         memory = {false, out.dv};
         return out;

@@ -19,9 +19,15 @@ struct CurvePoint
 /// mu(x) = 0.4 exp(-x/0.01) + 0.45 exp(-x/0.1) + 0.35, x = |v - v_b| in m/s. mu_s = 1.2, mu(inf) = 0.35.
 struct ClassicalCurve
 {
-    double mu(double x) const noexcept { return 0.4 * std::exp(-x / 0.01) + 0.45 * std::exp(-x / 0.1) + 0.35; }
+    double mu(double x) const noexcept
+    {
+        return 0.4 * std::exp(-x / 0.01) + 0.45 * std::exp(-x / 0.1) + 0.35;
+    }
     double slope(double x) const noexcept { return -40.0 * std::exp(-x / 0.01) - 4.5 * std::exp(-x / 0.1); }
-    double curvature(double x) const noexcept { return 4000.0 * std::exp(-x / 0.01) + 45.0 * std::exp(-x / 0.1); }
+    double curvature(double x) const noexcept
+    {
+        return 4000.0 * std::exp(-x / 0.01) + 45.0 * std::exp(-x / 0.1);
+    }
     double staticMu() const noexcept { return 1.2; }
     CurvePoint at(double x) const noexcept
     {
@@ -64,8 +70,17 @@ struct PowerLawCurve
     }
 };
 
-inline PowerLawCurve steadySlidingPowerLaw() { return {0.2, 0.011, 1.0}; }
-inline PowerLawCurve bowJumpCurve() { return {0.5, 0.27, 1.0}; }
-inline PowerLawCurve rodJumpCurve() { return {0.37, 0.35, 1.0}; }
+inline PowerLawCurve steadySlidingPowerLaw()
+{
+    return {0.2, 0.011, 1.0};
+}
+inline PowerLawCurve bowJumpCurve()
+{
+    return {0.5, 0.27, 1.0};
+}
+inline PowerLawCurve rodJumpCurve()
+{
+    return {0.37, 0.35, 1.0};
+}
 
 } // namespace rosin::physics

@@ -32,7 +32,7 @@ struct JunctionSolution
 /// reset() clears dynamic state without allocating; solve() is real-time safe.
 class FrictionLaw
 {
-public:
+  public:
     virtual ~FrictionLaw() = default;
     /// Off the audio thread: compute sample-rate constants, tables, calibrations.
     virtual void prepare(double sampleRate) = 0;

@@ -19,9 +19,9 @@ namespace rosin::physics
 
 struct InstrumentConfig
 {
-    std::string name = "cello";                  ///< "cello", "violin", or a preset's name
-    std::vector<StringParameters> strings;       ///< lowest to highest
-    BodyParameters body;                         ///< shared bridge admittance (rigid when empty)
+    std::string name = "cello";            ///< "cello", "violin", or a preset's name
+    std::vector<StringParameters> strings; ///< lowest to highest
+    BodyParameters body;                   ///< shared bridge admittance (rigid when empty)
     bool torsion = true;
     bool bendingStiffness = true;
     FrictionModel friction = FrictionModel::Plastic;
@@ -35,7 +35,7 @@ InstrumentConfig violinInstrument();
 
 class BowedInstrument
 {
-public:
+  public:
     /// Off the audio thread.
     void prepare(const InstrumentConfig& config, double sampleRate);
     void reset() noexcept;
@@ -51,7 +51,7 @@ public:
     /// True if any string reset itself after a runaway during the last step.
     bool recoveredFromRunaway() const noexcept { return recovered_; }
 
-private:
+  private:
     InstrumentConfig config_;
     std::vector<std::unique_ptr<BowedStringVoice>> voices_;
     bool recovered_ = false;

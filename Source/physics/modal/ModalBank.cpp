@@ -76,7 +76,10 @@ double ModalBank::direct(int n, ModalOutput kind) const noexcept
     return dcTrue - 2.0 * (residue(n, kind) * p * T_ / (1.0 - p)).real();
 }
 
-double ModalBank::modalStiffness(int n) const noexcept { return std::norm(s[n]); }
+double ModalBank::modalStiffness(int n) const noexcept
+{
+    return std::norm(s[n]);
+}
 
 double ModalBank::outputAtLastStep(int n, ModalOutput kind, double x) const noexcept
 {

@@ -38,7 +38,7 @@ struct ModeSpec
 
 class ModalBank
 {
-public:
+  public:
     /// Allocates. Modes must satisfy 0 < omega < pi * sampleRate.
     void configure(const std::vector<ModeSpec>& modes, double sampleRate);
     /// Recomputes poles for new mode specs of the same count, keeping the state (no allocation).
@@ -58,12 +58,12 @@ public:
     double value(int n, ModalOutput kind, double x) const noexcept;
 
     // Split arrays (public for the kernels; treat as read-only outside ModalKernels).
-    std::vector<double> pRe, pIm; ///< digital pole p
-    std::vector<double> dRe, dIm; ///< state input gain p T
-    std::vector<double> wRe, wIm; ///< state w~
+    std::vector<double> pRe, pIm;        ///< digital pole p
+    std::vector<double> dRe, dIm;        ///< state input gain p T
+    std::vector<double> wRe, wIm;        ///< state w~
     std::vector<std::complex<double>> s; ///< continuous pole (upper half plane)
 
-private:
+  private:
     double T_ = 1.0 / 48000.0;
     void setPole(int n, const ModeSpec& spec) noexcept;
 };

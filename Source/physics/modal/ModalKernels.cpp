@@ -1,6 +1,7 @@
 #include "ModalKernels.h"
 
-// Function multi-versioning: GCC and Clang on x86-64 build one clone per listed level and choose at load time.
+// Function multi-versioning: GCC and Clang on x86-64 build one clone per listed level and choose at load
+// time.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(ROSIN_NO_MULTIVERSION)
 #define ROSIN_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #else
@@ -11,8 +12,8 @@ namespace rosin::physics
 {
 
 ROSIN_VECTOR_CLONES
-TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const double* gainA, double a, const double* gainB, double b,
-                                   const OutputWeights& o1, const OutputWeights& o2) noexcept
+TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const double* gainA, double a, const double* gainB,
+                                   double b, const OutputWeights& o1, const OutputWeights& o2) noexcept
 {
     const int n = bank.size();
     double* __restrict wr = bank.wRe.data();
@@ -41,7 +42,8 @@ TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const double* gainA, double 
 }
 
 ROSIN_VECTOR_CLONES
-double advanceOneInputOneOutput(ModalBank& bank, const double* gain, double a, const OutputWeights& o1) noexcept
+double advanceOneInputOneOutput(ModalBank& bank, const double* gain, double a,
+                                const OutputWeights& o1) noexcept
 {
     const int n = bank.size();
     double* __restrict wr = bank.wRe.data();

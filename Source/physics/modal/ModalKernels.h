@@ -25,10 +25,11 @@ struct ThreeSums
 };
 
 /// x_n = gainA_n a + gainB_n b; advance; return the two output sums over the new state.
-TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const double* gainA, double a, const double* gainB, double b,
-                                   const OutputWeights& o1, const OutputWeights& o2) noexcept;
+TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const double* gainA, double a, const double* gainB,
+                                   double b, const OutputWeights& o1, const OutputWeights& o2) noexcept;
 /// x_n = gain_n a; advance; return the output sum over the new state.
-double advanceOneInputOneOutput(ModalBank& bank, const double* gain, double a, const OutputWeights& o1) noexcept;
+double advanceOneInputOneOutput(ModalBank& bank, const double* gain, double a,
+                                const OutputWeights& o1) noexcept;
 /// x_n = gain_n a; advance; return three output sums over the new state.
 ThreeSums advanceOneInputThreeOutputs(ModalBank& bank, const double* gain, double a, const OutputWeights& o1,
                                       const OutputWeights& o2, const OutputWeights& o3) noexcept;

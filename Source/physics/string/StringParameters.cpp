@@ -7,13 +7,23 @@
 namespace rosin::physics
 {
 
-double StringParameters::waveSpeed() const { return std::sqrt(tension / massPerLength); }
-double StringParameters::impedance() const { return std::sqrt(tension * massPerLength); }
-double StringParameters::fundamental() const { return waveSpeed() / (2.0 * length); }
+double StringParameters::waveSpeed() const
+{
+    return std::sqrt(tension / massPerLength);
+}
+double StringParameters::impedance() const
+{
+    return std::sqrt(tension * massPerLength);
+}
+double StringParameters::fundamental() const
+{
+    return waveSpeed() / (2.0 * length);
+}
 
 double StringParameters::inharmonicity(double vibratingLength) const
 {
-    return std::numbers::pi * std::numbers::pi * bendingStiffness / (tension * vibratingLength * vibratingLength);
+    return std::numbers::pi * std::numbers::pi * bendingStiffness /
+           (tension * vibratingLength * vibratingLength);
 }
 
 double StringParameters::modeAngularFrequency(int n, double vibratingLength) const
@@ -33,10 +43,14 @@ double StringParameters::lossFactor(int n, double vibratingLength, bool stopped)
 namespace
 {
 // Tension and mass per length fix the open pitch: m = P / (2 L f0)^2.
-double massFor(double tension, double length, double f0) { return tension / std::pow(2.0 * length * f0, 2.0); }
+double massFor(double tension, double length, double f0)
+{
+    return tension / std::pow(2.0 * length * f0, 2.0);
+}
 
 StringParameters make(std::string name, double f0, double tension, double length, double EI, double lossF,
-                      double lossB, double lossA, double ctOverC, double ZtOverZ0, double Qt, std::string source)
+                      double lossB, double lossA, double ctOverC, double ZtOverZ0, double Qt,
+                      std::string source)
 {
     StringParameters s;
     s.name = std::move(name);
@@ -91,16 +105,21 @@ std::vector<StringParameters> catalogue()
                      "estimate: tension typical chart value, EI/losses/torsion scaled from cello D3"));
     c.push_back(make("cello-G2", 98.00, 112.0, cello, 4.5e-4, 23, 12.5, 0.11, 3.7, 3.3, 45,
                      "estimate: tension typical chart value, EI/losses/torsion scaled from cello D3"));
-    c.push_back(make("cello-A3", 220.0, 140.0, cello, 3.0e-4, 15, 6.0, 0.5, 5.0, 3.4, 40,
-                     "estimate: tension typical chart value, EI/losses/torsion between cello D3 and violin E5"));
-    c.push_back(make("violin-G3", 196.0, 45.0, violin, 0.6e-4, 23, 12.5, 0.5, 3.7, 3.3, 45,
-                     "estimate: tension typical chart value, EI/losses/torsion scaled from cello D3 (wound)"));
-    c.push_back(make("violin-D4", 293.7, 42.0, violin, 0.4e-4, 20, 8.0, 1.0, 4.0, 3.3, 40,
-                     "estimate: tension typical chart value, EI/losses/torsion scaled from cello D3 (wound)"));
-    c.push_back(make("violin-A4", 440.0, 50.0, violin, 0.4e-4, 12, 3.0, 1.5, 6.0, 3.4, 35,
-                     "estimate: tension typical chart value, EI/losses/torsion between cello D3 and violin E5"));
-    c.push_back(make("violin-E5-instrument", 659.26, 72.5, violin, 0.47e-4, 5, 0.2, 2.0, 11.1, 3.5, 30,
-                     "seed 001 Table 1 violin E tension and losses, retuned to E5 = 659.26 Hz at L = 0.325 m"));
+    c.push_back(
+        make("cello-A3", 220.0, 140.0, cello, 3.0e-4, 15, 6.0, 0.5, 5.0, 3.4, 40,
+             "estimate: tension typical chart value, EI/losses/torsion between cello D3 and violin E5"));
+    c.push_back(
+        make("violin-G3", 196.0, 45.0, violin, 0.6e-4, 23, 12.5, 0.5, 3.7, 3.3, 45,
+             "estimate: tension typical chart value, EI/losses/torsion scaled from cello D3 (wound)"));
+    c.push_back(
+        make("violin-D4", 293.7, 42.0, violin, 0.4e-4, 20, 8.0, 1.0, 4.0, 3.3, 40,
+             "estimate: tension typical chart value, EI/losses/torsion scaled from cello D3 (wound)"));
+    c.push_back(
+        make("violin-A4", 440.0, 50.0, violin, 0.4e-4, 12, 3.0, 1.5, 6.0, 3.4, 35,
+             "estimate: tension typical chart value, EI/losses/torsion between cello D3 and violin E5"));
+    c.push_back(
+        make("violin-E5-instrument", 659.26, 72.5, violin, 0.47e-4, 5, 0.2, 2.0, 11.1, 3.5, 30,
+             "seed 001 Table 1 violin E tension and losses, retuned to E5 = 659.26 Hz at L = 0.325 m"));
     return c;
 }
 } // namespace

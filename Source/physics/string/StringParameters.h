@@ -11,23 +11,23 @@ namespace rosin::physics
 /// reference §4.1: eta_F x 1e-5, eta_B x 1e-3, eta_A in 1/s.
 struct StringParameters
 {
-    std::string name;                   ///< e.g. "cello-D3"
-    double tension = 111.0;             ///< P, N
-    double massPerLength = 2.7e-3;      ///< m, kg/m
-    double length = 0.6906;             ///< L, m (open, nut to bridge)
-    double bendingStiffness = 3.0e-4;   ///< EI, N m^2
-    double lossF = 23.0;                ///< eta_F as printed (x 1e-5)
-    double lossB = 12.5;                ///< eta_B as printed (x 1e-3)
-    double lossA = 0.11;                ///< eta_A, 1/s
-    double stoppedLossF = 69.0;         ///< eta_F when finger-stopped (seed 001 Table 1 bracket value)
-    double torsionalWaveSpeed = 758.0;  ///< c_t, m/s
-    double torsionalQ = 45.0;           ///< Q_t
-    double torsionalImpedance = 1.8;    ///< Z_t, kg/s, referred to the string surface
-    std::string source;                 ///< where the numbers come from ("seed 001 Table 1", "estimate: ...")
+    std::string name;                  ///< e.g. "cello-D3"
+    double tension = 111.0;            ///< P, N
+    double massPerLength = 2.7e-3;     ///< m, kg/m
+    double length = 0.6906;            ///< L, m (open, nut to bridge)
+    double bendingStiffness = 3.0e-4;  ///< EI, N m^2
+    double lossF = 23.0;               ///< eta_F as printed (x 1e-5)
+    double lossB = 12.5;               ///< eta_B as printed (x 1e-3)
+    double lossA = 0.11;               ///< eta_A, 1/s
+    double stoppedLossF = 69.0;        ///< eta_F when finger-stopped (seed 001 Table 1 bracket value)
+    double torsionalWaveSpeed = 758.0; ///< c_t, m/s
+    double torsionalQ = 45.0;          ///< Q_t
+    double torsionalImpedance = 1.8;   ///< Z_t, kg/s, referred to the string surface
+    std::string source;                ///< where the numbers come from ("seed 001 Table 1", "estimate: ...")
 
-    double waveSpeed() const;           ///< c = sqrt(P/m), m/s
-    double impedance() const;           ///< Z0 = sqrt(P m), kg/s
-    double fundamental() const;         ///< f0 = c / (2L) of the open string, Hz (ignoring stiffness)
+    double waveSpeed() const;   ///< c = sqrt(P/m), m/s
+    double impedance() const;   ///< Z0 = sqrt(P m), kg/s
+    double fundamental() const; ///< f0 = c / (2L) of the open string, Hz (ignoring stiffness)
     double inharmonicity(double vibratingLength) const; ///< B = pi^2 EI / (P L^2)
     double etaF(bool stopped) const { return (stopped ? stoppedLossF : lossF) * 1e-5; }
     double etaB() const { return lossB * 1e-3; }

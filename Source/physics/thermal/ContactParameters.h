@@ -15,9 +15,9 @@ enum class ContactScaling
 /// A contact disc of radius `radius` at `referenceForce`, with a softened rosin layer `layerThickness`.
 struct ContactGeometry
 {
-    double radius = 250e-6;        ///< a_ref, m
-    double referenceForce = 1.0;   ///< N_ref, N
-    double layerThickness = 1e-6;  ///< delta, m
+    double radius = 250e-6;       ///< a_ref, m
+    double referenceForce = 1.0;  ///< N_ref, N
+    double layerThickness = 1e-6; ///< delta, m
     ContactScaling scaling = ContactScaling::Coulomb;
     /// Contact radius at normal force N (m).
     double radiusAt(double normalForce) const;
@@ -27,15 +27,15 @@ struct ContactGeometry
 /// crossing temperatures (26.2 K, 36.8 K); both are estimates for rosin ([A] in the reference).
 struct ThermalMaterial
 {
-    double conductivity = 0.191;          ///< K_r, W/(m K)
+    double conductivity = 0.191;              ///< K_r, W/(m K)
     double volumetricHeatCapacity = 0.9987e6; ///< rho_r c_r, J/(m^3 K)
-    double advectionWidthRatio = 1.0;     ///< advection width w = ratio * a (WG25 writes w = a)
+    double advectionWidthRatio = 1.0;         ///< advection width w = ratio * a (WG25 writes w = a)
 };
 
 /// Everything the thermal friction laws need besides the sample rate.
 struct ContactParameters
 {
-    ContactGeometry rig;                                    ///< the bowing contact: Galluzzo rig by default
+    ContactGeometry rig; ///< the bowing contact: Galluzzo rig by default
     ContactGeometry calibration{500e-6, 3.0, 10e-6, ContactScaling::Coulomb}; ///< steady-sliding rig
     ThermalMaterial material;
     double ambientOffset = 0.0; ///< K: rosin temperature at rest minus the calibration's ambient

@@ -99,7 +99,8 @@ double ThermalCalibration::lookup(double T) const noexcept
         return ambientValue_;
     const double x = T / uniformStep_;
     if (x < 1.0)
-        return lookupLogLog(T); // the first cell, where the viscosity changes by decades, keeps the exact table
+        return lookupLogLog(
+            T); // the first cell, where the viscosity changes by decades, keeps the exact table
     if (x >= static_cast<double>(uniform_.size() - 1))
         return values_.back();
     const auto i = static_cast<std::size_t>(x);

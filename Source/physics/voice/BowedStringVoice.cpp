@@ -85,7 +85,8 @@ void BowedStringVoice::Impl::buildModes(const VoiceConfig& cfg, double fs)
         ++nTrans;
     int nTors = 0;
     if (cfg.torsion)
-        while (nTors < cfg.maxTorsionalModes && (nTors + 1) * pi * string.torsionalWaveSpeed / openLength < modeLimit)
+        while (nTors < cfg.maxTorsionalModes &&
+               (nTors + 1) * pi * string.torsionalWaveSpeed / openLength < modeLimit)
             ++nTors;
     // Pad each bank to a multiple of the widest vector (8 doubles) with silent modes (zero input and output
     // weights): the kernels then run without scalar tails.
@@ -194,7 +195,8 @@ void BowedStringVoice::Impl::updateWeights()
         U1 += body.direct(j, ModalOutput::Velocity) * bodyGain[j];
         U2 += body.direct(j, ModalOutput::Acceleration) * bodyGain[j];
     }
-    // Bridge force F = (1-beta) f - (P/L) u - (mL/3) u'' - sum_n c_n q''_n, with every term = history + direct.
+    // Bridge force F = (1-beta) f - (P/L) u - (mL/3) u'' - sum_n c_n q''_n, with every term = history +
+    // direct.
     M3 = mL / 3.0 - B1;
     D = 1.0 + (P / L) * U0 + M3 * U2;
     kappa = (1.0 - beta - A1) / D;
@@ -223,7 +225,8 @@ void BowedStringVoice::Impl::clearState()
 BowedStringVoice::BowedStringVoice() : impl_(std::make_unique<Impl>()) {}
 BowedStringVoice::~BowedStringVoice() = default;
 
-void BowedStringVoice::prepare(const VoiceConfig& config, std::unique_ptr<FrictionLaw> friction, double sampleRate)
+void BowedStringVoice::prepare(const VoiceConfig& config, std::unique_ptr<FrictionLaw> friction,
+                               double sampleRate)
 {
     if (!friction)
         throw std::invalid_argument("BowedStringVoice::prepare: a friction law is required");
@@ -291,13 +294,15 @@ VoiceSample BowedStringVoice::step(const BowInput& in) noexcept
     const double F = Fh + s.kappa * f;
     const double udd = s.uddh + s.U2 * F;
 
-    const TwoSums st = advanceTwoInputsTwoOutputs(s.trans, s.aN.data(), f, s.bN.data(), -udd, s.transVel, s.transAcc);
+    const TwoSums st =
+        advanceTwoInputsTwoOutputs(s.trans, s.aN.data(), f, s.bN.data(), -udd, s.transVel, s.transAcc);
     s.Sv = st.first;
     s.Sa = st.second;
     s.Tv = s.tors.size() ? advanceOneInputOneOutput(s.tors, s.torsGain.data(), f, s.torsVel) : 0.0;
     if (s.body.size())
     {
-        const ThreeSums sb = advanceOneInputThreeOutputs(s.body, s.bodyGain.data(), F, s.bodyU, s.bodyUd, s.bodyUdd);
+        const ThreeSums sb =
+            advanceOneInputThreeOutputs(s.body, s.bodyGain.data(), F, s.bodyU, s.bodyUd, s.bodyUdd);
         s.uh = sb.first, s.udh = sb.second, s.uddh = sb.third;
     }
     s.lastF = f, s.lastBridge = F, s.lastUdd = udd;
@@ -323,10 +328,22 @@ int countNonZero(const std::vector<double>& v)
 }
 } // namespace
 
-int BowedStringVoice::transverseModeCount() const noexcept { return countNonZero(impl_->transActive); }
-int BowedStringVoice::torsionalModeCount() const noexcept { return countNonZero(impl_->torsActive); }
-int BowedStringVoice::bodyModeCount() const noexcept { return countNonZero(impl_->bodyGain); }
-double BowedStringVoice::instantaneousAdmittance() const noexcept { return impl_->y0; }
+int BowedStringVoice::transverseModeCount() const noexcept
+{
+    return countNonZero(impl_->transActive);
+}
+int BowedStringVoice::torsionalModeCount() const noexcept
+{
+    return countNonZero(impl_->torsActive);
+}
+int BowedStringVoice::bodyModeCount() const noexcept
+{
+    return countNonZero(impl_->bodyGain);
+}
+double BowedStringVoice::instantaneousAdmittance() const noexcept
+{
+    return impl_->y0;
+}
 
 std::vector<double> BowedStringVoice::transverseModeFrequencies() const
 {
@@ -374,7 +391,10 @@ double BowedStringVoice::Impl::energy() const
     return e;
 }
 
-double BowedStringVoice::storedEnergy() const noexcept { return impl_->energy(); }
+double BowedStringVoice::storedEnergy() const noexcept
+{
+    return impl_->energy();
+}
 
 double BowedStringVoice::bowPointDisplacement() const noexcept
 {
@@ -384,7 +404,8 @@ double BowedStringVoice::bowPointDisplacement() const noexcept
         u += s.body.outputAtLastStep(j, ModalOutput::Displacement, s.lastBridge * s.bodyGain[j]);
     for (int i = 0; i < s.trans.size(); ++i)
     {
-        y += s.transPhi[i] * s.trans.outputAtLastStep(i, ModalOutput::Displacement, s.aN[i] * s.lastF - s.bN[i] * s.lastUdd);
+        y += s.transPhi[i] *
+             s.trans.outputAtLastStep(i, ModalOutput::Displacement, s.aN[i] * s.lastF - s.bN[i] * s.lastUdd);
     }
     return y + (1.0 - s.beta) * u;
 }

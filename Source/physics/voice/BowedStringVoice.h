@@ -41,7 +41,7 @@ struct VoiceSample
 
 class BowedStringVoice
 {
-public:
+  public:
     BowedStringVoice();
     ~BowedStringVoice();
     BowedStringVoice(const BowedStringVoice&) = delete;
@@ -73,7 +73,7 @@ public:
     /// True if the last step produced a non-finite or runaway state and the voice reset itself.
     bool recoveredFromRunaway() const noexcept { return recovered_; }
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
     std::unique_ptr<FrictionLaw> friction_;
