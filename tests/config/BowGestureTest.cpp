@@ -1,37 +1,12 @@
 // Per-sample values of BowGesture: exact constant-acceleration velocity, snapping smoother, ramps, holds.
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
-#include <new>
+
+#include "support/AllocationCounter.h"
 
 #include "gesture/BowGesture.h"
 #include "gesture/GestureLimits.h"
-
-// Counts heap allocations while `gCounting` is set, to prove next() never allocates.
-namespace
-{
-std::atomic<bool> gCounting{false};
-std::atomic<long> gAllocations{0};
-} // namespace
-
-void* operator new(std::size_t size)
-{
-    if (gCounting.load())
-        ++gAllocations;
-    if (void* p = std::malloc(size == 0 ? 1 : size))
-        return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept
-{
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept
-{
-    std::free(p);
-}
 
 namespace rosin::gesture
 {
@@ -224,15 +199,17 @@ TEST(BowGesture, NextNeverAllocates)
     script.segments = {a, b};
     BowGesture g;
     g.prepare(script, GestureStart{}, kFs);
-    gAllocations = 0;
-    gCounting = true;
+    long allocations = 0;
     double sum = 0.0;
-    for (int k = 0; k < 4000; ++k)
-        sum += g.next().bowVelocity;
-    g.reset();
-    sum += g.next().bowForce;
-    gCounting = false;
-    EXPECT_EQ(gAllocations.load(), 0);
+    {
+        rosin::test::AllocationCounter counter;
+        for (int k = 0; k < 4000; ++k)
+            sum += g.next().bowVelocity;
+        g.reset();
+        sum += g.next().bowForce;
+        allocations = counter.count();
+    }
+    EXPECT_EQ(allocations, 0);
     EXPECT_TRUE(std::isfinite(sum));
 }
 

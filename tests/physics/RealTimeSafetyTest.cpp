@@ -3,48 +3,14 @@
 // this test binary to count allocations while a flag is set.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
 #include "physics/friction/CurveFrictionLaw.h"
 #include "physics/friction/FrictionLawFactory.h"
 #include "physics/voice/BowedStringVoice.h"
+#include "support/AllocationCounter.h"
 #include "support/TestLaws.h"
-
-namespace
-{
-std::atomic<bool> countingAllocations{false};
-std::atomic<long> allocationsWhileCounting{0};
-} // namespace
-
-void* operator new(std::size_t size)
-{
-    if (countingAllocations.load(std::memory_order_relaxed))
-        allocationsWhileCounting.fetch_add(1, std::memory_order_relaxed);
-    if (void* p = std::malloc(size ? size : 1))
-        return p;
-    throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept
-{
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept
-{
-    std::free(p);
-}
 
 namespace rosin::test
 {
-/// Counts allocations inside a scope.
-struct AllocationCounter
-{
-    AllocationCounter() { allocationsWhileCounting = 0, countingAllocations = true; }
-    ~AllocationCounter() { countingAllocations = false; }
-    long count() const { return allocationsWhileCounting.load(); }
-};
-
 /// Steps through a gesture that exercises every per-sample path: attack, slip, beta and finger glides.
 long allocationsDuringSteps(physics::BowedStringVoice& voice)
 {
