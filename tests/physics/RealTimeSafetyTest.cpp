@@ -5,6 +5,7 @@
 
 #include "physics/friction/CurveFrictionLaw.h"
 #include "physics/friction/FrictionLawFactory.h"
+#include "physics/instrument/BowedInstrument.h"
 #include "physics/voice/BowedStringVoice.h"
 #include "support/AllocationCounter.h"
 #include "support/TestLaws.h"
@@ -92,5 +93,25 @@ TEST(RealTimeSafety, OutputStaysFiniteUnderWildInput)
         }
         EXPECT_LT(worst, 1e4) << name;
         std::printf("[figure] wild input, %s: largest |bridge force| %.1f N\n", name.c_str(), worst);
+    }
+}
+
+TEST(RealTimeSafety, InstrumentStepAllocatesNothing)
+{
+    using namespace rosin::physics;
+    for (const auto& cfg : {celloInstrument(), violinInstrument()})
+    {
+        BowedInstrument instrument;
+        instrument.prepare(cfg, 48000.0);
+        std::vector<BowInput> in(instrument.stringCount(), BowInput{0.8, 0.0, 0.1, 1.0});
+        std::vector<VoiceSample> out(instrument.stringCount());
+        rosin::test::AllocationCounter counter;
+        for (int k = 0; k < 10000; ++k)
+        {
+            for (auto& b : in)
+                b.bowVelocity = std::min(0.1, 0.5 * k / 48000.0), b.fingerRatio = 1.0 - 0.2 * k / 10000.0;
+            instrument.step(in.data(), out.data());
+        }
+        EXPECT_EQ(counter.count(), 0) << cfg.name;
     }
 }

@@ -1,5 +1,7 @@
 #include "BowedInstrument.h"
 
+#include <numbers>
+
 namespace rosin::physics
 {
 
@@ -28,15 +30,17 @@ void BowedInstrument::prepare(const InstrumentConfig& config, double sampleRate)
 {
     config_ = config;
     voices_.clear();
+    VoiceConfig reference;
+    body_.configure(config.body, sampleRate, 2.0 * std::numbers::pi * reference.maxModeFrequencyRatio * sampleRate);
     for (const auto& s : config.strings)
     {
         VoiceConfig vc;
-        vc.string = s;
-        vc.body = config.body;
+        vc.string = s; // vc.body stays rigid: the strings share body_
         vc.torsion = config.torsion;
         vc.bendingStiffness = config.bendingStiffness;
         auto voice = std::make_unique<BowedStringVoice>();
         voice->prepare(vc, makeFrictionLaw(config.friction, config.contact), sampleRate);
+        voice->useSharedBody(&body_);
         voices_.push_back(std::move(voice));
     }
 }
@@ -45,20 +49,46 @@ void BowedInstrument::reset() noexcept
 {
     for (auto& v : voices_)
         v->reset();
+    body_.reset();
+    lastTotal_ = 0.0;
     recovered_ = false;
 }
 
 double BowedInstrument::step(const BowInput* inputs, VoiceSample* outputs) noexcept
 {
+    // Each junction predicts the other strings' bridge force from the last sample; then the total bridge
+    // force G follows exactly from sum_i F_i = sum_i (R_i - c_i G), and every string and the body are driven
+    // with it, so the linear system (strings + body) stays the exact discretised Lagrangian one.
+    double sumR = 0.0, sumC = 0.0;
+    for (std::size_t i = 0; i < voices_.size(); ++i)
+    {
+        const double others = lastTotal_ - voices_[i]->lastBridgeForce();
+        sumR += voices_[i]->solveJunction(inputs[i], others);
+        sumC += voices_[i]->bridgeCoupling();
+    }
+    const double G = sumR / (1.0 + sumC);
     double total = 0.0;
     recovered_ = false;
     for (std::size_t i = 0; i < voices_.size(); ++i)
     {
-        outputs[i] = voices_[i]->step(inputs[i]);
+        outputs[i] = voices_[i]->finishStep(G);
         recovered_ = recovered_ || voices_[i]->recoveredFromRunaway();
-        total += outputs[i].bridgeForce;
+        total += voices_[i]->lastBridgeForce();
     }
+    if (recovered_)
+        body_.reset(); // a string blew up and reset: start the bridge afresh too
+    else
+        body_.advance(G);
+    lastTotal_ = recovered_ ? 0.0 : G;
     return total;
+}
+
+double BowedInstrument::storedEnergy() const noexcept
+{
+    double e = body_.energyAtLastStep();
+    for (const auto& v : voices_)
+        e += v->storedEnergy();
+    return e;
 }
 
 double BowedInstrument::openFrequency(int i) const noexcept

@@ -3,15 +3,20 @@
 // bow input and friction law, all answering at the same bridge. This is what the plugin and the offline
 // MIDI renderer drive: one object, one step per sample for all strings.
 //
-// Current coupling: each string sits on its own copy of the body (a body per string), so strings do not yet
-// excite one another through the bridge (no sympathetic resonance). The output is the sum of the strings'
-// bridge forces. Real-time contract as for BowedStringVoice: prepare() allocates; reset() and step() never
-// allocate, lock or call the system.
+// All strings stand on one bridge: the body is driven by the sum of their bridge forces, and every string
+// hears the body's motion, so a bowed string sets the others ringing (sympathetic resonance) and the body is
+// computed once. Each string's junction predicts the other strings' bridge force from the previous sample;
+// once all junctions are solved the total bridge force follows exactly, and every string and the body are
+// driven with it, so the linear system stays the exact discretised one (and passive). The output is the total
+// bridge force.
+// Real-time contract as for BowedStringVoice: prepare() allocates; reset() and step() never allocate, lock or
+// call the system.
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "../friction/FrictionLawFactory.h"
+#include "../body/BridgeBody.h"
 #include "../voice/BowedStringVoice.h"
 
 namespace rosin::physics
@@ -50,10 +55,15 @@ class BowedInstrument
     double openFrequency(int i) const noexcept;
     /// True if any string reset itself after a runaway during the last step.
     bool recoveredFromRunaway() const noexcept { return recovered_; }
+    /// Stored energy of all strings and the shared body at the last step, J.
+    double storedEnergy() const noexcept;
+    const BridgeBody& body() const noexcept { return body_; }
 
   private:
     InstrumentConfig config_;
     std::vector<std::unique_ptr<BowedStringVoice>> voices_;
+    BridgeBody body_;
+    double lastTotal_ = 0.0; ///< total bridge force of the last sample, N
     bool recovered_ = false;
 };
 

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "../body/BridgeBody.h"
 #include "../modal/ModalKernels.h"
 
 namespace rosin::physics
@@ -27,20 +28,26 @@ struct BowedStringVoice::Impl
     bool stopped = false, torsionOn = true;
     double T = 1.0 / 48000.0, modeLimit = 0.0; // rad/s
 
-    ModalBank trans, tors, body;
+    ModalBank trans, tors;
+    BridgeBody ownBody;
+    BridgeBody* body = &ownBody; // ownBody, or a body shared by several strings (BowedInstrument)
     std::vector<ModeSpec> transSpecs, torsSpecs;
     std::vector<double> transActive, torsActive; // 1 for modes below the frequency limit, else 0
     std::vector<double> aN, bN;                  // string inputs x_n = aN f + bN (-u'')
     std::vector<double> transPhi;                // bow coupling of each transverse mode (corrected shape)
-    std::vector<double> torsGain, bodyGain;
-    OutputWeights transVel, transAcc, torsVel, bodyU, bodyUd, bodyUdd;
+    std::vector<double> torsGain;
+    OutputWeights transVel, transAcc, torsVel;
 
     // Direct (instantaneous) coefficients of the coupled bow/bridge solve.
-    double Bv = 0, U0 = 0, U1 = 0, U2 = 0, M3 = 0, D = 1, kappa = 0, y0 = 1;
+    double Bv = 0, U0 = 0, U1 = 0, U2 = 0, M3 = 0, D = 1, kappa = 0, y0 = 1, A1 = 0;
+    double bridgeCoupling = 0; ///< c = (P/L) U0 + M3 U2: F = R - c G, G the total bridge force
+    // This sample's junction, between solveJunction() and finishStep().
+    JunctionSolution solution;
+    double bowVelocity = 0;
     // Full-band correction of the bow admittance, c (1 - z^-1): see updateWeights().
     double bandCorrection = 0.0, previousFriction = 0.0;
     // Histories: outputs of the state before the current input.
-    double Sv = 0, Sa = 0, Tv = 0, uh = 0, udh = 0, uddh = 0;
+    double Sv = 0, Sa = 0, Tv = 0;
     // Last step's inputs (energy and displacement inspection).
     double lastF = 0, lastBridge = 0, lastUdd = 0;
     long sampleCounter = 0;
@@ -49,6 +56,7 @@ struct BowedStringVoice::Impl
     void computeTransSpecs();
     void computeTorsSpecs();
     void updateWeights();
+    void applyControl(const BowInput& in);
     void clearState();
     double energy() const;
 };
@@ -102,22 +110,7 @@ void BowedStringVoice::Impl::buildModes(const VoiceConfig& cfg, double fs)
     trans.configure(transSpecs, fs);
     tors.configure(torsSpecs, fs);
 
-    std::vector<ModeSpec> bodySpecs;
-    bodyGain.clear();
-    for (const auto& mode : cfg.body.modes)
-    {
-        const double omega = 2.0 * pi * mode.frequency;
-        if (omega >= modeLimit)
-            continue;
-        bodySpecs.push_back({omega, 1.0 / mode.q});
-        bodyGain.push_back(1.0 / mode.effectiveMass);
-    }
-    while (!bodySpecs.empty() && bodySpecs.size() % 8 != 0)
-    {
-        bodySpecs.push_back(bodySpecs.back());
-        bodyGain.push_back(0.0); // silent: never driven, so its state stays zero
-    }
-    body.configure(bodySpecs, fs);
+    ownBody.configure(cfg.body, fs, modeLimit);
     aN.assign(nTrans, 0.0);
     transPhi.assign(nTrans, 0.0);
     bN.assign(nTrans, 0.0);
@@ -125,17 +118,6 @@ void BowedStringVoice::Impl::buildModes(const VoiceConfig& cfg, double fs)
     transVel.assign(nTrans);
     transAcc.assign(nTrans);
     torsVel.assign(nTors);
-    for (auto* o : {&bodyU, &bodyUd, &bodyUdd})
-        o->assign(body.size());
-    for (int j = 0; j < body.size(); ++j)
-    {
-        const auto rd = 2.0 * body.residue(j, ModalOutput::Displacement);
-        const auto rv = 2.0 * body.residue(j, ModalOutput::Velocity);
-        const auto ra = 2.0 * body.residue(j, ModalOutput::Acceleration);
-        bodyU.re[j] = rd.real(), bodyU.im[j] = rd.imag();
-        bodyUd.re[j] = rv.real(), bodyUd.im[j] = rv.imag();
-        bodyUdd.re[j] = ra.real(), bodyUdd.im[j] = ra.imag();
-    }
 }
 
 namespace
@@ -157,7 +139,8 @@ void BowedStringVoice::Impl::updateWeights()
 {
     const double m = string.massPerLength, P = string.tension, L = length;
     const double mL = m * L;
-    double A1 = 0, B1 = 0, Ya = 0;
+    double B1 = 0, Ya = 0;
+    A1 = 0;
     Bv = 0;
     for (int i = 0; i < trans.size(); ++i)
     {
@@ -188,17 +171,14 @@ void BowedStringVoice::Impl::updateWeights()
         torsVel.re[i] = rv.real(), torsVel.im[i] = rv.imag();
         Ya += phi * tors.direct(i, ModalOutput::Velocity) * torsGain[i];
     }
-    U0 = U1 = U2 = 0;
-    for (int j = 0; j < body.size(); ++j)
-    {
-        U0 += body.direct(j, ModalOutput::Displacement) * bodyGain[j];
-        U1 += body.direct(j, ModalOutput::Velocity) * bodyGain[j];
-        U2 += body.direct(j, ModalOutput::Acceleration) * bodyGain[j];
-    }
+    U0 = body->displacementDirect();
+    U1 = body->velocityDirect();
+    U2 = body->accelerationDirect();
     // Bridge force F = (1-beta) f - (P/L) u - (mL/3) u'' - sum_n c_n q''_n, with every term = history +
     // direct.
     M3 = mL / 3.0 - B1;
-    D = 1.0 + (P / L) * U0 + M3 * U2;
+    bridgeCoupling = (P / L) * U0 + M3 * U2;
+    D = 1.0 + bridgeCoupling;
     kappa = (1.0 - beta - A1) / D;
     y0 = Ya - Bv * U2 * kappa + (1.0 - beta) * U1 * kappa;
     // A string answers a sudden force at a point with v = f / (2 Z_eff) at once (McIntyre, Schumacher &
@@ -217,8 +197,8 @@ void BowedStringVoice::Impl::clearState()
 {
     trans.reset();
     tors.reset();
-    body.reset();
-    Sv = Sa = Tv = uh = udh = uddh = 0;
+    ownBody.reset();
+    Sv = Sa = Tv = 0;
     lastF = lastBridge = lastUdd = previousFriction = 0;
 }
 
@@ -261,54 +241,84 @@ void BowedStringVoice::reset() noexcept
 
 VoiceSample BowedStringVoice::step(const BowInput& in) noexcept
 {
+    const double R = solveJunction(in, 0.0);
+    // Alone on its body, the string's force is the whole bridge force: G = R - c G.
+    const double G = R / (1.0 + impl_->bridgeCoupling);
+    const VoiceSample out = finishStep(G);
+    if (impl_->body == &impl_->ownBody)
+        impl_->ownBody.advance(recovered_ ? 0.0 : G);
+    return out;
+}
+
+void BowedStringVoice::Impl::applyControl(const BowInput& in)
+{
+    const double newBeta = std::clamp(in.beta, 0.01, 0.5);
+    const double finger = std::clamp(in.fingerRatio, 0.1, 1.0);
+    const bool controlTick = (sampleCounter++ % kControlInterval) == 0;
+    if (controlTick && finger != fingerRatio)
+    {
+        fingerRatio = finger;
+        length = openLength * finger;
+        stopped = finger < 0.999;
+        computeTransSpecs();
+        computeTorsSpecs();
+        trans.retune(transSpecs.data(), trans.size());
+        tors.retune(torsSpecs.data(), tors.size());
+        beta = newBeta;
+        updateWeights();
+    }
+    else if (controlTick && newBeta != beta)
+    {
+        beta = newBeta;
+        updateWeights();
+    }
+}
+
+double BowedStringVoice::solveJunction(const BowInput& in, double otherStringsForce) noexcept
+{
     auto& s = *impl_;
     recovered_ = false;
-    const double beta = std::clamp(in.beta, 0.01, 0.5);
-    const double finger = std::clamp(in.fingerRatio, 0.1, 1.0);
-    const bool controlTick = (s.sampleCounter++ % kControlInterval) == 0;
-    if (controlTick && finger != s.fingerRatio)
-    {
-        s.fingerRatio = finger;
-        s.length = s.openLength * finger;
-        s.stopped = finger < 0.999;
-        s.computeTransSpecs();
-        s.computeTorsSpecs();
-        s.trans.retune(s.transSpecs.data(), s.trans.size());
-        s.tors.retune(s.torsSpecs.data(), s.tors.size());
-        s.beta = beta;
-        s.updateWeights();
-    }
-    else if (controlTick && beta != s.beta)
-    {
-        s.beta = beta;
-        s.updateWeights();
-    }
-
+    s.applyControl(in);
     const double P = s.string.tension, L = s.length;
-    const double Fh = (-(P / L) * s.uh - s.M3 * s.uddh - s.Sa) / s.D;
-    const double vh = s.Sv + s.Tv - s.Bv * (s.uddh + s.U2 * Fh) + (1.0 - s.beta) * (s.udh + s.U1 * Fh) -
+    const double uh = s.body->displacementHistory(), udh = s.body->velocityHistory();
+    const double uddh = s.body->accelerationHistory();
+    // What the bridge does this sample apart from this string's own force: the body's history plus its
+    // instantaneous answer to the other strings' forces (predicted by the caller).
+    const double G0 = otherStringsForce;
+    const double uE = uh + s.U0 * G0, udE = udh + s.U1 * G0, uddE = uddh + s.U2 * G0;
+    const double Fh = (-(P / L) * uE - s.M3 * uddE - s.Sa) / s.D;
+    const double vh = s.Sv + s.Tv - s.Bv * (uddE + s.U2 * Fh) + (1.0 - s.beta) * (udE + s.U1 * Fh) -
                       s.bandCorrection * s.previousFriction;
-    const double vb = in.bowVelocity;
-    const JunctionSolution sol = friction_->solve({vh - vb, 1.0 / s.y0, std::max(0.0, in.bowForce)});
-    const double f = sol.frictionForce;
-    const double F = Fh + s.kappa * f;
-    const double udd = s.uddh + s.U2 * F;
+    s.bowVelocity = in.bowVelocity;
+    s.solution = friction_->solve({vh - in.bowVelocity, 1.0 / s.y0, std::max(0.0, in.bowForce)});
+    // Bridge force F = R - c G, G the total force on the bridge (reference §5.1, one string per port).
+    const double f = s.solution.frictionForce;
+    return (1.0 - s.beta - s.A1) * f - (P / L) * uh - s.M3 * uddh - s.Sa;
+}
+
+double BowedStringVoice::bridgeCoupling() const noexcept { return impl_->bridgeCoupling; }
+
+VoiceSample BowedStringVoice::finishStep(double totalBridgeForce) noexcept
+{
+    auto& s = *impl_;
+    const double P = s.string.tension, L = s.length;
+    const double G = totalBridgeForce;
+    const double f = s.solution.frictionForce;
+    const double R = (1.0 - s.beta - s.A1) * f - (P / L) * s.body->displacementHistory() -
+                     s.M3 * s.body->accelerationHistory() - s.Sa;
+    const double F = R - s.bridgeCoupling * G;
+    const double udd = s.body->accelerationHistory() + s.U2 * G;
 
     const TwoSums st =
         advanceTwoInputsTwoOutputs(s.trans, s.aN.data(), f, s.bN.data(), -udd, s.transVel, s.transAcc);
     s.Sv = st.first;
     s.Sa = st.second;
     s.Tv = s.tors.size() ? advanceOneInputOneOutput(s.tors, s.torsGain.data(), f, s.torsVel) : 0.0;
-    if (s.body.size())
-    {
-        const ThreeSums sb =
-            advanceOneInputThreeOutputs(s.body, s.bodyGain.data(), F, s.bodyU, s.bodyUd, s.bodyUdd);
-        s.uh = sb.first, s.udh = sb.second, s.uddh = sb.third;
-    }
     s.lastF = f, s.lastBridge = F, s.lastUdd = udd;
     s.previousFriction = f;
 
-    VoiceSample out{F, vb + sol.dv, f, vb, friction_->contactTemperature(), sol.sticking};
+    const double vb = s.bowVelocity;
+    VoiceSample out{F, vb + s.solution.dv, f, vb, friction_->contactTemperature(), s.solution.sticking};
     // A runaway (non-finite or absurd) state is reset rather than heard: nothing physical reaches 1e4 N here.
     if (!std::isfinite(F) || !std::isfinite(s.Sv) || std::abs(F) > 1e4)
     {
@@ -338,7 +348,7 @@ int BowedStringVoice::torsionalModeCount() const noexcept
 }
 int BowedStringVoice::bodyModeCount() const noexcept
 {
-    return countNonZero(impl_->bodyGain);
+    return impl_->body->modeCount();
 }
 double BowedStringVoice::instantaneousAdmittance() const noexcept
 {
@@ -357,18 +367,9 @@ std::vector<double> BowedStringVoice::transverseModeFrequencies() const
 double BowedStringVoice::Impl::energy() const
 {
     const double m = string.massPerLength, L = length, mL = m * L;
-    double u = 0, ud = 0, e = 0;
-    for (int j = 0; j < body.size(); ++j)
-    {
-        if (bodyGain[j] == 0.0)
-            continue; // padding
-        const double in = lastBridge * bodyGain[j];
-        const double x = body.outputAtLastStep(j, ModalOutput::Displacement, in);
-        const double v = body.outputAtLastStep(j, ModalOutput::Velocity, in);
-        const double mass = 1.0 / bodyGain[j];
-        e += 0.5 * mass * (v * v + body.modalStiffness(j) * x * x);
-        u += x, ud += v;
-    }
+    // The body's own energy is counted here only when this string owns it.
+    double e = body == &ownBody ? ownBody.energyAtLastStep() : 0.0;
+    const double u = body->displacementAtLastStep(), ud = body->velocityAtLastStep();
     double cross = 0;
     for (int i = 0; i < trans.size(); ++i)
     {
@@ -391,6 +392,14 @@ double BowedStringVoice::Impl::energy() const
     return e;
 }
 
+void BowedStringVoice::useSharedBody(BridgeBody* body)
+{
+    impl_->body = body ? body : &impl_->ownBody;
+    impl_->updateWeights();
+}
+
+double BowedStringVoice::lastBridgeForce() const noexcept { return impl_->lastBridge; }
+
 double BowedStringVoice::storedEnergy() const noexcept
 {
     return impl_->energy();
@@ -399,9 +408,8 @@ double BowedStringVoice::storedEnergy() const noexcept
 double BowedStringVoice::bowPointDisplacement() const noexcept
 {
     const auto& s = *impl_;
-    double y = 0, u = 0;
-    for (int j = 0; j < s.body.size(); ++j)
-        u += s.body.outputAtLastStep(j, ModalOutput::Displacement, s.lastBridge * s.bodyGain[j]);
+    double y = 0;
+    const double u = s.body->displacementAtLastStep();
     for (int i = 0; i < s.trans.size(); ++i)
     {
         y += s.transPhi[i] *

@@ -19,6 +19,8 @@
 namespace rosin::physics
 {
 
+class BridgeBody;
+
 /// Per-sample bow input, already smoothed (see BowGesture), SI units.
 struct BowInput
 {
@@ -69,6 +71,24 @@ class BowedStringVoice
     double bowPointDisplacement() const noexcept;
     const FrictionLaw& friction() const noexcept { return *friction_; }
     const VoiceConfig& config() const noexcept { return config_; }
+
+    /// Put this string on a body owned elsewhere (BowedInstrument), or back on its own with nullptr. The voice
+    /// then reads that body's histories and no longer advances it: the owner advances it once per sample with
+    /// the sum of all strings' bridge forces. Off the audio thread, after prepare().
+    void useSharedBody(BridgeBody* body);
+    /// Bridge force of the last step, N.
+    double lastBridgeForce() const noexcept;
+
+    // --- Two-phase step, for several strings on one shared body (BowedInstrument) ---
+    // step() is solveJunction(in, 0) followed by finishStep(G) with G this string's own bridge force.
+    /// Phase 1: apply the bow input and solve the friction junction, taking the other strings' bridge force
+    /// this sample to be `otherStringsForce` (a prediction). Returns R: this string's bridge force is R - c G
+    /// once the total bridge force G is known (c = bridgeCoupling()).
+    double solveJunction(const BowInput& in, double otherStringsForce) noexcept;
+    /// c in F = R - c G, dimensionless.
+    double bridgeCoupling() const noexcept;
+    /// Phase 2: with the total bridge force G of this sample, drive the string's modes and report the sample.
+    VoiceSample finishStep(double totalBridgeForce) noexcept;
 
     /// True if the last step produced a non-finite or runaway state and the voice reset itself.
     bool recoveredFromRunaway() const noexcept { return recovered_; }

@@ -1,0 +1,96 @@
+#include "BridgeBody.h"
+
+#include <algorithm>
+#include <numbers>
+
+namespace rosin::physics
+{
+
+void BridgeBody::configure(const BodyParameters& body, double sampleRate, double modeLimit)
+{
+    std::vector<ModeSpec> specs;
+    gain_.clear();
+    for (const auto& mode : body.modes)
+    {
+        const double omega = 2.0 * std::numbers::pi * mode.frequency;
+        if (omega >= modeLimit)
+            continue;
+        specs.push_back({omega, 1.0 / mode.q});
+        gain_.push_back(1.0 / mode.effectiveMass);
+    }
+    while (!specs.empty() && specs.size() % 8 != 0)
+    {
+        specs.push_back(specs.back());
+        gain_.push_back(0.0); // silent padding: never driven, so its state stays zero
+    }
+    bank_.configure(specs, sampleRate);
+    for (auto* o : {&u_, &ud_, &udd_})
+        o->assign(bank_.size());
+    U0_ = U1_ = U2_ = 0.0;
+    for (int j = 0; j < bank_.size(); ++j)
+    {
+        const auto rd = 2.0 * bank_.residue(j, ModalOutput::Displacement);
+        const auto rv = 2.0 * bank_.residue(j, ModalOutput::Velocity);
+        const auto ra = 2.0 * bank_.residue(j, ModalOutput::Acceleration);
+        u_.re[j] = rd.real(), u_.im[j] = rd.imag();
+        ud_.re[j] = rv.real(), ud_.im[j] = rv.imag();
+        udd_.re[j] = ra.real(), udd_.im[j] = ra.imag();
+        U0_ += bank_.direct(j, ModalOutput::Displacement) * gain_[j];
+        U1_ += bank_.direct(j, ModalOutput::Velocity) * gain_[j];
+        U2_ += bank_.direct(j, ModalOutput::Acceleration) * gain_[j];
+    }
+    reset();
+}
+
+void BridgeBody::reset() noexcept
+{
+    bank_.reset();
+    uh_ = udh_ = uddh_ = lastForce_ = 0.0;
+}
+
+void BridgeBody::advance(double bridgeForce) noexcept
+{
+    lastForce_ = bridgeForce;
+    if (bank_.size() == 0)
+        return;
+    const ThreeSums s = advanceOneInputThreeOutputs(bank_, gain_.data(), bridgeForce, u_, ud_, udd_);
+    uh_ = s.first, udh_ = s.second, uddh_ = s.third;
+}
+
+int BridgeBody::modeCount() const noexcept
+{
+    return static_cast<int>(std::count_if(gain_.begin(), gain_.end(), [](double g) { return g != 0.0; }));
+}
+
+double BridgeBody::displacementAtLastStep() const noexcept
+{
+    double u = 0.0;
+    for (int j = 0; j < bank_.size(); ++j)
+        u += bank_.outputAtLastStep(j, ModalOutput::Displacement, lastForce_ * gain_[j]);
+    return u;
+}
+
+double BridgeBody::velocityAtLastStep() const noexcept
+{
+    double v = 0.0;
+    for (int j = 0; j < bank_.size(); ++j)
+        v += bank_.outputAtLastStep(j, ModalOutput::Velocity, lastForce_ * gain_[j]);
+    return v;
+}
+
+double BridgeBody::energyAtLastStep() const noexcept
+{
+    double e = 0.0;
+    for (int j = 0; j < bank_.size(); ++j)
+    {
+        if (gain_[j] == 0.0)
+            continue; // padding
+        const double in = lastForce_ * gain_[j];
+        const double x = bank_.outputAtLastStep(j, ModalOutput::Displacement, in);
+        const double v = bank_.outputAtLastStep(j, ModalOutput::Velocity, in);
+        e += 0.5 / gain_[j] * (v * v + bank_.modalStiffness(j) * x * x);
+    }
+    return e;
+}
+
+} // namespace rosin::physics

@@ -1,0 +1,48 @@
+#pragma once
+// The body as a discrete modal system driven by the bridge force (reference eq. 5.2 and §5.1): one or several
+// strings push the bridge with force F; the body answers with a bridge displacement u, velocity u' and
+// acceleration u''. Each output is "history + direct * F" for the current sample, which is what the strings'
+// junction solves need. Real-time contract: configure() allocates; reset() and advance() do not.
+#include "../modal/ModalKernels.h"
+#include "BodyParameters.h"
+
+namespace rosin::physics
+{
+
+class BridgeBody
+{
+public:
+    /// Off the audio thread. Modes at or above modeLimit (rad/s) are left out; the bank is padded with silent
+    /// modes to whole vectors.
+    void configure(const BodyParameters& body, double sampleRate, double modeLimit);
+    void reset() noexcept;
+    /// Feed this sample's total bridge force (N) and advance: the histories become those of the next sample.
+    void advance(double bridgeForce) noexcept;
+
+    bool rigid() const noexcept { return bank_.size() == 0; }
+    int modeCount() const noexcept; ///< modes that are driven (padding excluded)
+
+    // Outputs known before the current force (m, m/s, m/s^2).
+    double displacementHistory() const noexcept { return uh_; }
+    double velocityHistory() const noexcept { return udh_; }
+    double accelerationHistory() const noexcept { return uddh_; }
+    // Response to the current force, per newton.
+    double displacementDirect() const noexcept { return U0_; }
+    double velocityDirect() const noexcept { return U1_; }
+    double accelerationDirect() const noexcept { return U2_; }
+
+    /// Bridge displacement (m) and stored energy (J) at the last advanced sample.
+    double displacementAtLastStep() const noexcept;
+    double velocityAtLastStep() const noexcept;
+    double energyAtLastStep() const noexcept;
+
+private:
+    ModalBank bank_;
+    std::vector<double> gain_; ///< 1/m_k, 0 for padding
+    OutputWeights u_, ud_, udd_;
+    double uh_ = 0, udh_ = 0, uddh_ = 0;
+    double U0_ = 0, U1_ = 0, U2_ = 0;
+    double lastForce_ = 0;
+};
+
+} // namespace rosin::physics
