@@ -18,6 +18,9 @@
 #include "config/VoiceSetup.h"
 #include "gesture/BuiltinGestures.h"
 #include "gesture/GestureLimits.h"
+#ifdef ROSIN_WITH_PLUGIN_CORE
+#include "MidiRenderCommand.h"
+#endif
 
 namespace rosin::cli
 {
@@ -229,11 +232,20 @@ std::string renderHelp()
            "  rosin render --preset schumacher-rig --gesture steady:speed=0.1,force=1.18,beta=0.127\n"
            "  rosin render --preset cello-classical --body rigid --gesture my-gesture.json\n"
            "\n"
-           "exit status: 0 success, 1 bad value, file or preset, 2 unknown option or missing value\n";
+           "exit status: 0 success, 1 bad value, file or preset, 2 unknown option or missing value\n"
+#ifdef ROSIN_WITH_PLUGIN_CORE
+           "\n" +
+           midiRenderHelp()
+#endif
+        ;
 }
 
 int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
 {
+#ifdef ROSIN_WITH_PLUGIN_CORE
+    if (isMidiRender(args))
+        return runMidiRender(args, out, err);
+#endif
     const RenderOptions o = parseRenderOptions(args);
     if (o.help)
     {

@@ -97,7 +97,8 @@ TEST(MidiGestureController, FingerRatioGivesTheEqualTemperedPitchWithinATenthOfA
             if (ratio >= 1.0 || ratio <= 0.1)
                 continue; // below the string (open) or beyond the finger range
             const double sounding = f[static_cast<std::size_t>(s)] / ratio;
-            EXPECT_LT(std::abs(cents(sounding / noteFrequency(note))), 0.1) << config.name << " note " << note;
+            EXPECT_LT(std::abs(cents(sounding / noteFrequency(note))), 0.1)
+                << config.name << " note " << note;
         }
     }
 }
@@ -162,13 +163,46 @@ TEST(MidiGestureController, RepeatedNoteIsABowChangeThatReversesTheVelocity)
     EXPECT_EQ(rig.controller.stroke(2).direction(), -1.0);
 }
 
+TEST(MidiGestureController, NoteOffAndNoteOnAtTheSameSampleIsABowChange)
+{
+    GestureParameters p;
+    p.attackAcceleration = 5.0;
+    Rig rig(physics::celloInstrument(), p);
+    rig.controller.handleEvent(GestureEvent::noteOn(57, 127));
+    for (int k = 0; k < 4800; ++k)
+        rig.step(3);
+    rig.controller.handleEvent(GestureEvent::noteOff(57));
+    rig.controller.handleEvent(GestureEvent::noteOn(57, 127));
+    EXPECT_EQ(rig.controller.stroke(3).phase(), BowStroke::Phase::Attack);
+    EXPECT_EQ(rig.controller.stroke(3).direction(), -1.0);
+    for (int k = 0; k < 9600; ++k)
+        rig.step(3);
+    EXPECT_DOUBLE_EQ(rig.in[3].bowVelocity, -p.bowSpeed);
+}
+
+TEST(MidiGestureController, StrokesFromRestAlternateDirection)
+{
+    Rig rig;
+    for (int stroke = 0; stroke < 3; ++stroke)
+    {
+        rig.controller.handleEvent(GestureEvent::noteOn(57, 100));
+        for (int k = 0; k < 4800; ++k)
+            rig.step(3);
+        EXPECT_EQ(rig.in[3].bowVelocity > 0.0, stroke % 2 == 0) << "stroke " << stroke;
+        rig.controller.handleEvent(GestureEvent::noteOff(57));
+        for (int k = 0; k < 4800; ++k)
+            rig.step(3);
+    }
+}
+
 TEST(MidiGestureController, AnotherNoteOnABowingStringIsAFingerChangeWithoutReversal)
 {
     Rig rig;
     rig.controller.handleEvent(GestureEvent::noteOn(50, 100)); // D3 open
     for (int k = 0; k < 4800; ++k)
         rig.step(2);
-    // F3, on the D string too, while D3 is still held: later than the chord window, so a legato finger change.
+    // F3, on the D string too, while D3 is still held: later than the chord window, so a legato finger
+    // change.
     rig.controller.handleEvent(GestureEvent::noteOn(53, 100));
     EXPECT_EQ(rig.controller.note(2), 53);
     for (int k = 0; k < 4800; ++k)
@@ -221,7 +255,7 @@ TEST(MidiGestureController, DoubleStopOnTheSameStringMovesToTheNextLowerString)
     Rig rig;
     // Notes within the chord window form a chord: B3 on the A string, C4 (also an A-string note) moves down.
     rig.controller.handleEvent(GestureEvent::noteOn(59, 100));
-    EXPECT_EQ(rig.controller.stringForNote(60), 2);             // C4 goes to the D string
+    EXPECT_EQ(rig.controller.stringForNote(60), 2); // C4 goes to the D string
     rig.controller.handleEvent(GestureEvent::noteOn(60, 100));
     rig.step(0);
     EXPECT_TRUE(rig.controller.stroke(2).bowing());
@@ -239,9 +273,9 @@ TEST(MidiGestureController, ControllersAndPressureScaleTheParameters)
     for (int k = 0; k < 48000; ++k)
         rig.step(2);
     EXPECT_NEAR(rig.in[2].bowForce, 1.0, 1e-9);
-    rig.controller.handleEvent(GestureEvent::controller(1, 96));   // x2 force
-    rig.controller.handleEvent(GestureEvent::controller(11, 32));  // x0.5 speed
-    rig.controller.handleEvent(GestureEvent::controller(21, 127)); // x~2 beta
+    rig.controller.handleEvent(GestureEvent::controller(1, 96));    // x2 force
+    rig.controller.handleEvent(GestureEvent::controller(11, 32));   // x0.5 speed
+    rig.controller.handleEvent(GestureEvent::controller(21, 127));  // x~2 beta
     rig.controller.handleEvent(GestureEvent::polyPressure(50, 32)); // x0.5 force
     for (int k = 0; k < 4800; ++k)
         rig.step(2);
@@ -258,8 +292,9 @@ TEST(MidiGestureController, ControllersAndPressureScaleTheParameters)
 TEST(MidiGestureController, OutputDoesNotDependOnHowSamplesAreGrouped)
 {
     // Events handled just before their sample: the same event list gives the same inputs whatever the block.
-    const std::vector<GestureEvent> events = {GestureEvent::noteOn(50, 90, 10), GestureEvent::controller(1, 80, 700),
-                                              GestureEvent::noteOn(50, 90, 3000), GestureEvent::noteOff(50, 6000)};
+    const std::vector<GestureEvent> events = {
+        GestureEvent::noteOn(50, 90, 10), GestureEvent::controller(1, 80, 700),
+        GestureEvent::noteOn(50, 90, 3000), GestureEvent::noteOff(50, 6000)};
     std::vector<double> reference;
     for (int block : {1, 7, 512})
     {

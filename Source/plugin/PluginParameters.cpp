@@ -1,0 +1,117 @@
+#include "PluginParameters.h"
+
+#include <cmath>
+
+namespace rosin::plugin
+{
+
+const std::array<const char*, 10>& allParameterIds()
+{
+    static const std::array<const char*, 10> list = {
+        ids::bowForce, ids::bowSpeed,           ids::attackAcceleration, ids::beta,       ids::friction,
+        ids::body,     ids::ambientTemperature, ids::outputLevel,        ids::instrument, ids::string};
+    return list;
+}
+
+namespace
+{
+// Log-like taper centred where players spend their time, in the parameter's own unit.
+juce::NormalisableRange<float> physicalRange(const gesture::Range& r, float centre)
+{
+    juce::NormalisableRange<float> range(static_cast<float>(r.min), static_cast<float>(r.max));
+    range.setSkewForCentre(centre);
+    return range;
+}
+
+juce::AudioParameterFloatAttributes unit(const char* label, int decimals)
+{
+    return juce::AudioParameterFloatAttributes().withLabel(label).withStringFromValueFunction(
+        [decimals](float v, int) { return juce::String(v, decimals); });
+}
+
+juce::ParameterID pid(const char* id)
+{
+    return juce::ParameterID{id, ids::version};
+}
+
+juce::StringArray frictionChoices()
+{
+    juce::StringArray names;
+    for (const auto& n : physics::frictionModelNames())
+        names.add(n);
+    return names;
+}
+} // namespace
+
+juce::AudioProcessorValueTreeState::ParameterLayout createParameterLayout()
+{
+    namespace r = gesture::ranges;
+    juce::AudioProcessorValueTreeState::ParameterLayout layout;
+    layout.add(std::make_unique<juce::AudioParameterFloat>(
+        pid(ids::bowForce), "Bow force", physicalRange(r::bowForce, 1.0f), 1.0f, unit("N", 3)));
+    layout.add(std::make_unique<juce::AudioParameterFloat>(
+        pid(ids::bowSpeed), "Bow speed", physicalRange(r::bowSpeed, 0.1f), 0.1f, unit("m/s", 3)));
+    layout.add(std::make_unique<juce::AudioParameterFloat>(
+        pid(ids::attackAcceleration), "Attack acceleration", physicalRange(r::attackAcceleration, 1.0f), 2.0f,
+        unit("m/s^2", 2)));
+    layout.add(std::make_unique<juce::AudioParameterFloat>(
+        pid(ids::beta), "Bow position (beta)", physicalRange(r::beta, 0.1f), 0.0899f, unit("", 4)));
+    layout.add(
+        std::make_unique<juce::AudioParameterChoice>(pid(ids::friction), "Friction law", frictionChoices(),
+                                                     static_cast<int>(physics::FrictionModel::Plastic)));
+    layout.add(std::make_unique<juce::AudioParameterBool>(pid(ids::body), "Body", true));
+    layout.add(std::make_unique<juce::AudioParameterFloat>(
+        pid(ids::ambientTemperature), "Ambient temperature", juce::NormalisableRange<float>(0.0f, 40.0f),
+        20.0f, unit("C", 1)));
+    layout.add(std::make_unique<juce::AudioParameterFloat>(pid(ids::outputLevel), "Output level",
+                                                           juce::NormalisableRange<float>(-60.0f, 12.0f),
+                                                           kDefaultOutputLevelDb, unit("dB", 1)));
+    layout.add(std::make_unique<juce::AudioParameterChoice>(pid(ids::instrument), "Instrument",
+                                                            juce::StringArray{"cello", "violin"}, 0));
+    layout.add(std::make_unique<juce::AudioParameterChoice>(
+        pid(ids::string), "String", juce::StringArray{"auto", "I", "II", "III", "IV"}, 0));
+    return layout;
+}
+
+ParameterReader::ParameterReader(juce::AudioProcessorValueTreeState& state)
+    : bowForce_(state.getRawParameterValue(ids::bowForce)),
+      bowSpeed_(state.getRawParameterValue(ids::bowSpeed)),
+      attackAcceleration_(state.getRawParameterValue(ids::attackAcceleration)),
+      beta_(state.getRawParameterValue(ids::beta)), friction_(state.getRawParameterValue(ids::friction)),
+      body_(state.getRawParameterValue(ids::body)),
+      ambientTemperature_(state.getRawParameterValue(ids::ambientTemperature)),
+      outputLevel_(state.getRawParameterValue(ids::outputLevel)),
+      instrument_(state.getRawParameterValue(ids::instrument)),
+      string_(state.getRawParameterValue(ids::string))
+{
+    jassert(bowForce_ && bowSpeed_ && attackAcceleration_ && beta_ && friction_ && body_ &&
+            ambientTemperature_ && outputLevel_ && instrument_ && string_);
+}
+
+InstrumentKey ParameterReader::readKey() const noexcept
+{
+    InstrumentKey key;
+    key.instrument = juce::jlimit(0, 1, static_cast<int>(std::lround(instrument_->load())));
+    key.friction = static_cast<physics::FrictionModel>(
+        juce::jlimit(0, 5, static_cast<int>(std::lround(friction_->load()))));
+    key.body = body_->load() >= 0.5f;
+    key.ambientCelsius = ambientTemperature_->load();
+    return key;
+}
+
+ParameterSnapshot ParameterReader::read(int stringCount) const noexcept
+{
+    ParameterSnapshot s;
+    s.gesture.bowForce = bowForce_->load();
+    s.gesture.bowSpeed = bowSpeed_->load();
+    s.gesture.attackAcceleration = attackAcceleration_->load();
+    s.gesture.beta = beta_->load();
+    s.stringChoice = juce::jlimit(0, 4, static_cast<int>(std::lround(string_->load())));
+    // String I is the highest, as string players number them; the controller counts from the lowest.
+    s.gesture.stringOverride = s.stringChoice == 0 ? -1 : juce::jmax(0, stringCount - s.stringChoice);
+    s.key = readKey();
+    s.outputGain = std::pow(10.0, outputLevel_->load() / 20.0);
+    return s;
+}
+
+} // namespace rosin::plugin

@@ -1,0 +1,108 @@
+#pragma once
+// Rosin's AudioProcessor: MIDI and host parameters -> MidiGestureController -> BowedInstrument, sample by
+// sample. Shared by the plugin formats, `rosin render --midi` and the tests (library rosin_plugin_core).
+//
+// Audio thread (processBlock): no allocation, lock or system call. Parameters are read once per block into a
+// plain snapshot (direct atomic pointers); MIDI is applied at its sample offset, so the output does not
+// depend on the block size; denormals are flushed; the output is sanitised (non-finite -> 0, clamped to +-1)
+// and a voice that runs away resets itself and is counted. Builder side (message-thread timer, prepareToPlay,
+// or serviceEngineBuilds() from an offline renderer): a change of instrument, friction law, body, ambient
+// temperature or program rebuilds the instrument there and hands it over through EngineSlot (lock-free). It
+// takes effect at the next block boundary.
+#include <array>
+#include <atomic>
+#include <mutex>
+#include <vector>
+
+#include <juce_audio_processors/juce_audio_processors.h>
+
+#include "EngineSlot.h"
+#include "FactoryPrograms.h"
+#include "InstrumentSetup.h"
+#include "PluginParameters.h"
+#include "gesture/MidiGestureController.h"
+
+namespace rosin::plugin
+{
+
+class RosinProcessor : public juce::AudioProcessor, private juce::Timer
+{
+  public:
+    static constexpr int kStateVersion = 1;
+    static constexpr double kOutputClamp = 1.0;
+
+    RosinProcessor();
+    ~RosinProcessor() override;
+
+    void prepareToPlay(double sampleRate, int maximumExpectedSamplesPerBlock) override;
+    void releaseResources() override;
+    void reset() override;
+    bool isBusesLayoutSupported(const BusesLayout& layouts) const override;
+    void processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBuffer& midi) override;
+    using juce::AudioProcessor::processBlock;
+
+    juce::AudioProcessorEditor* createEditor() override;
+    bool hasEditor() const override { return true; }
+
+    const juce::String getName() const override { return "Rosin"; }
+    bool acceptsMidi() const override { return true; }
+    bool producesMidi() const override { return false; }
+    bool isMidiEffect() const override { return false; }
+    double getTailLengthSeconds() const override { return 3.0; }
+
+    int getNumPrograms() override { return static_cast<int>(programs_.size()); }
+    int getCurrentProgram() override { return currentProgram_; }
+    void setCurrentProgram(int index) override;
+    const juce::String getProgramName(int index) override;
+    void changeProgramName(int, const juce::String&) override {}
+
+    void getStateInformation(juce::MemoryBlock& destData) override;
+    void setStateInformation(const void* data, int sizeInBytes) override;
+
+    // --- Rosin ---
+    juce::AudioProcessorValueTreeState& parameters() noexcept { return state_; }
+    /// Builder-side work: frees retired engines and builds one if the instrument parameters changed. Called
+    /// by the message-thread timer; an offline renderer calls it between blocks. Never on the audio thread.
+    void serviceEngineBuilds();
+    /// Selects a program by preset name; false if there is none of that name.
+    bool setProgramByName(const std::string& name);
+    /// Voice resets after a runaway, and non-finite output samples, since prepareToPlay.
+    int runawayResets() const noexcept { return runawayResets_.load(); }
+    int nonFiniteSamples() const noexcept { return nonFiniteSamples_.load(); }
+    /// The engine the audio thread uses (tests, offline tools; not thread-safe against a swap).
+    const Engine* activeEngine() const noexcept { return slot_.active(); }
+
+  private:
+    void timerCallback() override { serviceEngineBuilds(); }
+    std::unique_ptr<Engine> buildEngine(const InstrumentKey& key, int generation);
+    void setParameterValue(const char* id, float value);
+
+    juce::AudioProcessorValueTreeState state_;
+    ParameterReader reader_;
+    std::vector<FactoryProgram> programs_;
+    int currentProgram_ = 0;
+
+    // Builder side, guarded by builderMutex_ (the audio thread never takes it).
+    std::mutex builderMutex_;
+    ProgramExtras extras_;
+    int programGeneration_ = 0;
+    InstrumentKey lastBuiltKey_;
+    int lastBuiltGeneration_ = -1;
+    long nextSerial_ = 1;
+    double sampleRate_ = 48000.0;
+    bool prepared_ = false;
+
+    EngineSlot slot_;
+
+    // Audio thread state.
+    gesture::MidiGestureController controller_;
+    long controllerSerial_ = -1;
+    std::array<physics::BowInput, gesture::MidiGestureController::kMaxStrings> inputs_{};
+    std::array<physics::VoiceSample, gesture::MidiGestureController::kMaxStrings> outputs_{};
+    gesture::OnePoleSmoother gain_;
+    std::atomic<bool> resetRequested_{false};
+    std::atomic<int> runawayResets_{0};
+    std::atomic<int> nonFiniteSamples_{0};
+};
+
+} // namespace rosin::plugin

@@ -1,0 +1,47 @@
+#pragma once
+// Shared helpers of the plugin tests: the demo phrase, renders through a fresh processor, signal checks.
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "MidiRenderer.h"
+#include "RosinProcessor.h"
+
+namespace rosin::test
+{
+
+inline const juce::MidiMessageSequence& demoPhrase()
+{
+    static const juce::MidiMessageSequence sequence = plugin::readMidiFile(juce::File(ROSIN_DEMO_MIDI));
+    return sequence;
+}
+
+inline plugin::MidiRenderResult renderDemo(const std::string& program, double sampleRate, int blockSize,
+                                           double tailSeconds = 1.0)
+{
+    plugin::RosinProcessor processor;
+    if (!program.empty())
+        processor.setProgramByName(program);
+    plugin::MidiRenderSettings settings;
+    settings.sampleRate = sampleRate;
+    settings.blockSize = blockSize;
+    settings.tailSeconds = tailSeconds;
+    return plugin::renderMidi(processor, demoPhrase(), settings);
+}
+
+inline void setParameter(plugin::RosinProcessor& p, const char* id, float plainValue)
+{
+    auto* parameter = p.parameters().getParameter(id);
+    parameter->setValueNotifyingHost(parameter->convertTo0to1(plainValue));
+}
+
+inline bool allFinite(const std::vector<float>& x)
+{
+    for (float v : x)
+        if (!std::isfinite(v))
+            return false;
+    return true;
+}
+
+} // namespace rosin::test
