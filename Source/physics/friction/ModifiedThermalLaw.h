@@ -7,9 +7,7 @@
 // reproduces mu_steady (eq. 11): ThermalCalibration::ModifiedBow / ModifiedRod.
 // Hertz contact scaling (A ~ Fb^(2/3), reference §8.3): A = K Fb (Fb/N_ref)^(-1/3), so the force is
 // multiplied by (Fb/N_ref)^(-1/3); with Coulomb scaling the factor is 1.
-#include "../thermal/ContactParameters.h"
-#include "../thermal/HeatBalance.h"
-#include "../thermal/ThermalCalibration.h"
+#include "../thermal/ThermalContact.h"
 #include "CurveJunctionSolver.h"
 #include "FrictionCurves.h"
 #include "FrictionLaw.h"
@@ -34,7 +32,7 @@ class ModifiedThermalLaw final : public FrictionLaw
     /// (from the same hysteresis memory); heat commit. As for PlasticThermalLaw, the single corrector pass
     /// needs a sample rate >= 1 kHz; near the top of the calibrated range dKY/dT grows without bound.
     JunctionSolution solve(const JunctionInput& in) noexcept override;
-    double contactTemperature() const noexcept override { return heat_.temperature(); }
+    double contactTemperature() const noexcept override { return thermal_.temperature(); }
     /// K Y(T) h(0) (x Hertz factor) at the committed temperature; at ambient mu_steady(0) = 0.2 * 0.011^-0.4.
     double staticCoefficient(double bowForce) const noexcept override;
     const char* name() const noexcept override
@@ -47,22 +45,17 @@ class ModifiedThermalLaw final : public FrictionLaw
     /// The friction curve at rise T and normal force Fb: h scaled by K Y(T) and the Hertz factor.
     PowerLawCurve curveAt(double temperatureRise, double bowForce) const noexcept;
 
-    const HeatBalance& heat() const noexcept { return heat_; }
-    const ThermalCalibration& calibration() const noexcept { return table_; }
+    const HeatBalance& heat() const noexcept { return thermal_.heat(); }
+    const ThermalCalibration& calibration() const noexcept { return thermal_.calibration(); }
     Variant variant() const noexcept { return variant_; }
 
   private:
     double hertzFactor(double bowForce) const noexcept;
 
-    ContactParameters contact_;
+    ThermalContact thermal_;
     Variant variant_;
     PowerLawCurve jump_;
-    HeatBalance heat_;
-    ThermalCalibration table_;
     CurveJunctionMemory memory_;
-    double previousPower_ = 0.0;
-    double previousSpeed_ = 0.0;
-    bool prepared_ = false;
 };
 
 } // namespace rosin::physics

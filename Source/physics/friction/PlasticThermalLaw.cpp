@@ -10,34 +10,28 @@ namespace rosin::physics
 
 void PlasticThermalLaw::prepare(double sampleRate)
 {
-    heat_.prepare(contact_, sampleRate);
-    table_.build(contact_, sampleRate, CalibrationQuantity::YieldStress);
-    prepared_ = true;
-    reset();
+    thermal_.prepare(sampleRate, CalibrationQuantity::YieldStress);
 }
 
 void PlasticThermalLaw::reset() noexcept
 {
-    heat_.reset();
-    previousPower_ = 0.0;
-    previousSpeed_ = 0.0;
+    thermal_.reset();
 }
 
 double PlasticThermalLaw::yieldStress(double T) const noexcept
 {
-    return table_.lookup(T + contact_.ambientOffset);
+    return thermal_.property(T);
 }
 
 double PlasticThermalLaw::frictionLimit(double T, double bowForce) const noexcept
 {
-    const double a = contact_.rig.radiusAt(bowForce);
-    return yieldStress(T) * std::numbers::pi * a * a;
+    return yieldStress(T) * thermal_.area(bowForce);
 }
 
 double PlasticThermalLaw::staticCoefficient(double bowForce) const noexcept
 {
     const double Fb = std::max(bowForce, HeatBalance::kMinimumBowForce);
-    return frictionLimit(heat_.temperature(), Fb) / Fb;
+    return frictionLimit(thermal_.temperature(), Fb) / Fb;
 }
 
 JunctionSolution PlasticThermalLaw::solveCharacteristic(double dvh, double twoZ, double limit) noexcept
@@ -53,17 +47,13 @@ JunctionSolution PlasticThermalLaw::solve(const JunctionInput& in) noexcept
     const double dvh = std::isfinite(in.dvHistory) ? in.dvHistory : 0.0;
     const double Fb = std::isfinite(in.bowForce) ? std::max(in.bowForce, 0.0) : 0.0;
     const double twoZ = in.loadSlope;
-    if (!prepared_)
+    if (!thermal_.prepared())
         return {dvh, 0.0, false};
     // Predictor: temperature with last sample's power (Woodhouse's order, one-sample lag).
-    const double Tpred = heat_.predict(previousPower_, previousSpeed_, Fb);
-    JunctionSolution s = solveCharacteristic(dvh, twoZ, frictionLimit(Tpred, Fb));
+    JunctionSolution s = solveCharacteristic(dvh, twoZ, frictionLimit(thermal_.predict(Fb), Fb));
     // Corrector: temperature with this sample's power, solve once more (reference §2.5 refinement).
-    const double Tcorr = heat_.predict(std::abs(s.frictionForce * s.dv), std::abs(s.dv), Fb);
-    s = solveCharacteristic(dvh, twoZ, frictionLimit(Tcorr, Fb));
-    previousPower_ = std::abs(s.frictionForce * s.dv);
-    previousSpeed_ = std::abs(s.dv);
-    heat_.commit(previousPower_, previousSpeed_, Fb);
+    s = solveCharacteristic(dvh, twoZ, frictionLimit(thermal_.predict(s, Fb), Fb));
+    thermal_.commit(s, Fb);
     return s;
 }
 

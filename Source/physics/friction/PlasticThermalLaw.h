@@ -6,9 +6,7 @@
 // alone). tau_y(T) is calibrated on the steady-sliding rig (ThermalCalibration::YieldStress), so at ambient
 // the limiting static coefficient is 1.2 (A_rig/Fb)/(A_cal/F_cal) = 0.90 for the Galluzzo contact
 // (reference §2.1, from seed 001 Fig. 14).
-#include "../thermal/ContactParameters.h"
-#include "../thermal/HeatBalance.h"
-#include "../thermal/ThermalCalibration.h"
+#include "../thermal/ThermalContact.h"
 #include "FrictionLaw.h"
 
 namespace rosin::physics
@@ -17,7 +15,7 @@ namespace rosin::physics
 class PlasticThermalLaw final : public FrictionLaw
 {
   public:
-    explicit PlasticThermalLaw(const ContactParameters& contact) : contact_(contact) {}
+    explicit PlasticThermalLaw(const ContactParameters& contact) : thermal_(contact) {}
 
     /// Off the audio thread: fits the heat model (rig contact) and calibrates tau_y(T) at this rate.
     void prepare(double sampleRate) override;
@@ -28,7 +26,7 @@ class PlasticThermalLaw final : public FrictionLaw
     /// audio rates but approaches 1 near 0.1 m/s at 100 Hz, where a steady slide can lock onto a
     /// two-cycle. Run at >= 1 kHz.
     JunctionSolution solve(const JunctionInput& in) noexcept override;
-    double contactTemperature() const noexcept override { return heat_.temperature(); }
+    double contactTemperature() const noexcept override { return thermal_.temperature(); }
     /// tau_y(T) A(Fb) / Fb at the committed temperature (Fb raised to HeatBalance::kMinimumBowForce).
     double staticCoefficient(double bowForce) const noexcept override;
     const char* name() const noexcept override { return "plastic"; }
@@ -41,17 +39,12 @@ class PlasticThermalLaw final : public FrictionLaw
     /// |f| <= limit at dv = 0, horizontal lines f = -/+ limit" (reference eq. 2.3). One solution always.
     static JunctionSolution solveCharacteristic(double dvHistory, double loadSlope, double limitN) noexcept;
 
-    const HeatBalance& heat() const noexcept { return heat_; }
-    const ThermalCalibration& calibration() const noexcept { return table_; }
-    const ContactParameters& contact() const noexcept { return contact_; }
+    const HeatBalance& heat() const noexcept { return thermal_.heat(); }
+    const ThermalCalibration& calibration() const noexcept { return thermal_.calibration(); }
+    const ContactParameters& contact() const noexcept { return thermal_.contact(); }
 
   private:
-    ContactParameters contact_;
-    HeatBalance heat_;
-    ThermalCalibration table_;
-    double previousPower_ = 0.0; ///< W, |f dv| of the previous sample
-    double previousSpeed_ = 0.0; ///< m/s, |dv| of the previous sample
-    bool prepared_ = false;
+    ThermalContact thermal_;
 };
 
 } // namespace rosin::physics

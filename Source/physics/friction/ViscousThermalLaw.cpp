@@ -10,28 +10,22 @@ namespace rosin::physics
 
 void ViscousThermalLaw::prepare(double sampleRate)
 {
-    heat_.prepare(contact_, sampleRate);
-    table_.build(contact_, sampleRate, CalibrationQuantity::Viscosity);
-    prepared_ = true;
-    reset();
+    thermal_.prepare(sampleRate, CalibrationQuantity::Viscosity);
 }
 
 void ViscousThermalLaw::reset() noexcept
 {
-    heat_.reset();
-    previousPower_ = 0.0;
-    previousSpeed_ = 0.0;
+    thermal_.reset();
 }
 
 double ViscousThermalLaw::viscosity(double T) const noexcept
 {
-    return table_.lookup(T + contact_.ambientOffset);
+    return thermal_.property(T);
 }
 
 double ViscousThermalLaw::dampingCoefficient(double T, double bowForce) const noexcept
 {
-    const double a = contact_.rig.radiusAt(bowForce);
-    return std::numbers::pi * a * a * viscosity(T) / contact_.rig.layerThickness;
+    return thermal_.area(bowForce) * viscosity(T) / thermal_.contact().rig.layerThickness;
 }
 
 // Load line f = 2Z (dv - dvh) meets f = -c dv at dv = 2Z dvh / (2Z + c).
@@ -46,18 +40,19 @@ JunctionSolution ViscousThermalLaw::solve(const JunctionInput& in) noexcept
     const double dvh = std::isfinite(in.dvHistory) ? in.dvHistory : 0.0;
     const double Fb = std::isfinite(in.bowForce) ? std::max(in.bowForce, 0.0) : 0.0;
     const double twoZ = in.loadSlope;
-    if (!prepared_)
+    if (!thermal_.prepared())
         return {dvh, 0.0, false};
+    const HeatBalance& heat = thermal_.heat();
     // g(T) = Phi(P(T)) - T: the temperature this step reaches with the power dissipated at viscosity eta(T),
     // minus T. Phi (HeatBalance::predict) is O(1).
     JunctionSolution s;
     auto residual = [&](double T)
     {
         s = solveLinear(dvh, twoZ, dampingCoefficient(T, Fb));
-        return heat_.predict(std::abs(s.frictionForce * s.dv), std::abs(s.dv), Fb) - T;
+        return thermal_.predict(s, Fb) - T;
     };
     // Predictor (previous power) and one corrector pass, as for the other thermal laws.
-    const double Tpred = heat_.predict(previousPower_, previousSpeed_, Fb);
+    const double Tpred = thermal_.predict(Fb);
     const double Tcorr = Tpred + residual(Tpred);
     const double g = residual(Tcorr);
     if (std::abs(g) > 1e-3 * (1.0 + Tcorr)) // K
@@ -69,12 +64,12 @@ JunctionSolution ViscousThermalLaw::solve(const JunctionInput& in) noexcept
         double lo = Tcorr, hi = Tcorr, glo = g, ghi = g;
         if (g > 0.0)
         {
-            hi = heat_.predict(0.25 * twoZ * dvh * dvh, 0.0, Fb); // g(hi) <= 0
+            hi = heat.predict(0.25 * twoZ * dvh * dvh, 0.0, Fb); // g(hi) <= 0
             ghi = residual(hi);
         }
         else
         {
-            lo = heat_.predict(0.0, std::abs(dvh), Fb); // g(lo) >= 0
+            lo = heat.predict(0.0, std::abs(dvh), Fb); // g(lo) >= 0
             glo = residual(lo);
         }
         // Illinois false position; keeps the bracket, converges superlinearly.
@@ -103,9 +98,7 @@ JunctionSolution ViscousThermalLaw::solve(const JunctionInput& in) noexcept
         }
         residual(T); // leaves s at the solution for T
     }
-    previousPower_ = std::abs(s.frictionForce * s.dv);
-    previousSpeed_ = std::abs(s.dv);
-    heat_.commit(previousPower_, previousSpeed_, Fb);
+    thermal_.commit(s, Fb);
     return s;
 }
 

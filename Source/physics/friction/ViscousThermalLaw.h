@@ -5,9 +5,7 @@
 // At fixed T the law is linear, so the load-line solve is closed-form: dv = 2Z dvh / (2Z + c). There is no
 // sticking barrier (seed 002 Fig. 4): the string always creeps, if only at ~1e-8 of dvh when cold.
 // eta(T) is calibrated on the steady-sliding rig (ThermalCalibration::Viscosity).
-#include "../thermal/ContactParameters.h"
-#include "../thermal/HeatBalance.h"
-#include "../thermal/ThermalCalibration.h"
+#include "../thermal/ThermalContact.h"
 #include "FrictionLaw.h"
 
 namespace rosin::physics
@@ -20,7 +18,7 @@ class ViscousThermalLaw final : public FrictionLaw
     /// Equal to the bottom of the calibration grid, below which the viscosity table is held constant.
     static constexpr double kStickingSpeed = ThermalCalibration::kMinSpeed;
 
-    explicit ViscousThermalLaw(const ContactParameters& contact) : contact_(contact) {}
+    explicit ViscousThermalLaw(const ContactParameters& contact) : thermal_(contact) {}
 
     void prepare(double sampleRate) override;
     void reset() noexcept override;
@@ -29,7 +27,7 @@ class ViscousThermalLaw final : public FrictionLaw
     /// this law can be >> 1 because eta(T) spans ~9 decades), the step's temperature is instead found as
     /// the root of T = Phi(P(T)) by bracketed Illinois iteration (<= 60 O(1) evaluations, no allocation).
     JunctionSolution solve(const JunctionInput& in) noexcept override;
-    double contactTemperature() const noexcept override { return heat_.temperature(); }
+    double contactTemperature() const noexcept override { return thermal_.temperature(); }
     /// A viscous layer has no static friction: always 0.
     double staticCoefficient(double) const noexcept override { return 0.0; }
     const char* name() const noexcept override { return "viscous"; }
@@ -39,18 +37,13 @@ class ViscousThermalLaw final : public FrictionLaw
     /// Damping coefficient c = A(Fb) eta(T) / delta_rig, kg/s.
     double dampingCoefficient(double temperatureRise, double bowForce) const noexcept;
 
-    const HeatBalance& heat() const noexcept { return heat_; }
-    const ThermalCalibration& calibration() const noexcept { return table_; }
+    const HeatBalance& heat() const noexcept { return thermal_.heat(); }
+    const ThermalCalibration& calibration() const noexcept { return thermal_.calibration(); }
 
   private:
     static JunctionSolution solveLinear(double dvh, double twoZ, double c) noexcept;
 
-    ContactParameters contact_;
-    HeatBalance heat_;
-    ThermalCalibration table_;
-    double previousPower_ = 0.0;
-    double previousSpeed_ = 0.0;
-    bool prepared_ = false;
+    ThermalContact thermal_;
 };
 
 } // namespace rosin::physics

@@ -1,0 +1,47 @@
+#include "ThermalContact.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace rosin::physics
+{
+
+void ThermalContact::prepare(double sampleRate, CalibrationQuantity quantity)
+{
+    heat_.prepare(contact_, sampleRate);
+    table_.build(contact_, sampleRate, quantity);
+    prepared_ = true;
+    reset();
+}
+
+void ThermalContact::reset() noexcept
+{
+    heat_.reset();
+    previousPower_ = 0.0;
+    previousSpeed_ = 0.0;
+}
+
+double ThermalContact::predict(double bowForce) const noexcept
+{
+    return heat_.predict(previousPower_, previousSpeed_, bowForce);
+}
+
+double ThermalContact::predict(const JunctionSolution& trial, double bowForce) const noexcept
+{
+    return heat_.predict(std::abs(trial.frictionForce * trial.dv), std::abs(trial.dv), bowForce);
+}
+
+void ThermalContact::commit(const JunctionSolution& solution, double bowForce) noexcept
+{
+    previousPower_ = std::abs(solution.frictionForce * solution.dv);
+    previousSpeed_ = std::abs(solution.dv);
+    heat_.commit(previousPower_, previousSpeed_, bowForce);
+}
+
+double ThermalContact::area(double bowForce) const noexcept
+{
+    const double a = contact_.rig.radiusAt(bowForce);
+    return std::numbers::pi * a * a;
+}
+
+} // namespace rosin::physics
