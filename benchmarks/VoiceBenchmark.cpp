@@ -111,7 +111,8 @@ int main(int argc, char** argv)
     RatioReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
     const double stk = reporter.nsPerSample.count("STK_Bowed") ? reporter.nsPerSample["STK_Bowed"] : 0.0;
-    std::printf("\n%-36s %12s %14s %10s %12s\n", "voice", "ns/sample", "x real time", "vs STK", "% of a core");
+    std::printf("\n%-36s %12s %14s %10s %12s\n", "voice", "ns/sample", "x real time", "vs STK",
+                "% of a core");
     for (const auto& [name, ns] : reporter.nsPerSample)
         std::printf("%-36s %12.1f %14.0f %10s %11.2f%%\n", name.c_str(), ns, 1e9 / (ns * kSampleRate),
                     stk > 0 ? (std::to_string(ns / stk).substr(0, 5) + "x").c_str() : "n/a",

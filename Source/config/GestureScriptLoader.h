@@ -1,6 +1,6 @@
 #pragma once
-// Reads "rosin-gesture/1" scripts (Resources/docs/gesture-script.md): timed segments of force, speed or acceleration,
-// beta and finger position, each a constant or a ramp.
+// Reads "rosin-gesture/1" scripts (Resources/docs/gesture-script.md): timed segments of force, speed or
+// acceleration, beta and finger position, each a constant or a ramp.
 #include <string>
 
 #include <nlohmann/json.hpp>

@@ -1,7 +1,8 @@
 #pragma once
 // An instrument preset: which string, body, friction law and contact, and the model switches of seed 001
 // Fig. 12 (torsion, bending stiffness). Slow parameters only; the bow gesture is separate.
-// Stored as JSON "rosin-preset/1" (Resources/docs/presets.md); absent fields keep the Galluzzo-rig defaults below.
+// Stored as JSON "rosin-preset/1" (Resources/docs/presets.md); absent fields keep the Galluzzo-rig defaults
+// below.
 #include <optional>
 #include <string>
 

@@ -1,7 +1,7 @@
 #pragma once
 // A bow gesture as data: a list of timed segments, each holding or ramping the bow's control quantities.
-// This is what a gesture script (Resources/docs/gesture-script.md) and the built-in specs ("steady:", "guettler:")
-// parse into; BowGesture turns it into per-sample BowInput. JUCE-free.
+// This is what a gesture script (Resources/docs/gesture-script.md) and the built-in specs ("steady:",
+// "guettler:") parse into; BowGesture turns it into per-sample BowInput. JUCE-free.
 #include <optional>
 #include <vector>
 

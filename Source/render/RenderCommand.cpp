@@ -198,7 +198,8 @@ std::string renderHelp()
            "segments\n"
            "                           of force, speed or acceleration, beta and finger, each constant or a "
            "ramp;\n"
-           "                           see Resources/docs/gesture-script.md. Absent values in a script's first "
+           "                           see Resources/docs/gesture-script.md. Absent values in a script's "
+           "first "
            "segment:\n"
            "                           force 1 N, speed 0 (bow at rest), the preset's beta, finger 1.\n"
            "  --out FILE.wav           the bridge force, mono 32-bit float, scaled for listening\n"
@@ -211,7 +212,8 @@ std::string renderHelp()
            "  --probe FILE.wav         also write internal channels, 32-bit float, physical SI values (not\n"
            "                           normalised), 5 channels in this order:\n" +
            channels +
-           "  --preset NAME|FILE.json  instrument preset (see Resources/docs/presets.md); a NAME is looked up in\n"
+           "  --preset NAME|FILE.json  instrument preset (see Resources/docs/presets.md); a NAME is looked "
+           "up in\n"
            "                           " +
            config::presetDirectory() + " (environment ROSIN_PRESET_DIR overrides)\n" +
            wrap("available: " + (presets.empty() ? std::string("none found") : presets), 27, 106) +

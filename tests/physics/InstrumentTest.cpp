@@ -12,8 +12,8 @@ namespace
 struct Ringing
 {
     double initialEnergy = 0.0;
-    double worstRise = 0.0;      ///< largest sample-to-sample rise of the total stored energy, / initial energy
-    std::vector<double> others;  ///< stored energy of each string after 0.5 s
+    double worstRise = 0.0; ///< largest sample-to-sample rise of the total stored energy, / initial energy
+    std::vector<double> others; ///< stored energy of each string after 0.5 s
 };
 
 Ringing ringAfterStroke(InstrumentConfig cfg, int plucked)
@@ -67,13 +67,14 @@ TEST(Instrument, BridgeCarriesSympatheticResonance)
     const auto withoutBody = ringAfterStroke(rigid, 2);
     for (int i : {0, 1, 3})
     {
-        EXPECT_GT(withBody.others[i], 1e-12) << "string " << i; // the body passed energy on
+        EXPECT_GT(withBody.others[i], 1e-12) << "string " << i;  // the body passed energy on
         EXPECT_EQ(withoutBody.others[i], 0.0) << "string " << i; // a rigid bridge passes nothing
     }
     // Strings with harmonics in common with D3 (146.8 Hz) take up far more: G2's third harmonic (294 Hz) is
     // D3's second, A3's second (440 Hz) is D3's third; C2 (65.4 Hz) shares none below 580 Hz.
     EXPECT_GT(withBody.others[1], 10.0 * withBody.others[0]);
     EXPECT_GT(withBody.others[3], 10.0 * withBody.others[0]);
-    std::printf("[figure] after bowing D3 on the cello body: energy in C2 %.2e J, G2 %.2e J, A3 %.2e J (D3 %.2e J)\n",
-                withBody.others[0], withBody.others[1], withBody.others[3], withBody.others[2]);
+    std::printf(
+        "[figure] after bowing D3 on the cello body: energy in C2 %.2e J, G2 %.2e J, A3 %.2e J (D3 %.2e J)\n",
+        withBody.others[0], withBody.others[1], withBody.others[3], withBody.others[2]);
 }

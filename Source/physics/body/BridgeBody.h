@@ -11,7 +11,7 @@ namespace rosin::physics
 
 class BridgeBody
 {
-public:
+  public:
     /// Off the audio thread. Modes at or above modeLimit (rad/s) are left out; the bank is padded with silent
     /// modes to whole vectors.
     void configure(const BodyParameters& body, double sampleRate, double modeLimit);
@@ -36,7 +36,7 @@ public:
     double velocityAtLastStep() const noexcept;
     double energyAtLastStep() const noexcept;
 
-private:
+  private:
     ModalBank bank_;
     std::vector<double> gain_; ///< 1/m_k, 0 for padding
     OutputWeights u_, ud_, udd_;

@@ -31,7 +31,8 @@ void BowedInstrument::prepare(const InstrumentConfig& config, double sampleRate)
     config_ = config;
     voices_.clear();
     VoiceConfig reference;
-    body_.configure(config.body, sampleRate, 2.0 * std::numbers::pi * reference.maxModeFrequencyRatio * sampleRate);
+    body_.configure(config.body, sampleRate,
+                    2.0 * std::numbers::pi * reference.maxModeFrequencyRatio * sampleRate);
     for (const auto& s : config.strings)
     {
         VoiceConfig vc;

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "../friction/FrictionLawFactory.h"
 #include "../body/BridgeBody.h"
+#include "../friction/FrictionLawFactory.h"
 #include "../voice/BowedStringVoice.h"
 
 namespace rosin::physics

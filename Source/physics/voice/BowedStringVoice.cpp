@@ -296,7 +296,10 @@ double BowedStringVoice::solveJunction(const BowInput& in, double otherStringsFo
     return (1.0 - s.beta - s.A1) * f - (P / L) * uh - s.M3 * uddh - s.Sa;
 }
 
-double BowedStringVoice::bridgeCoupling() const noexcept { return impl_->bridgeCoupling; }
+double BowedStringVoice::bridgeCoupling() const noexcept
+{
+    return impl_->bridgeCoupling;
+}
 
 VoiceSample BowedStringVoice::finishStep(double totalBridgeForce) noexcept
 {
@@ -398,7 +401,10 @@ void BowedStringVoice::useSharedBody(BridgeBody* body)
     impl_->updateWeights();
 }
 
-double BowedStringVoice::lastBridgeForce() const noexcept { return impl_->lastBridge; }
+double BowedStringVoice::lastBridgeForce() const noexcept
+{
+    return impl_->lastBridge;
+}
 
 double BowedStringVoice::storedEnergy() const noexcept
 {

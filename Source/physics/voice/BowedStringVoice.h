@@ -72,9 +72,9 @@ class BowedStringVoice
     const FrictionLaw& friction() const noexcept { return *friction_; }
     const VoiceConfig& config() const noexcept { return config_; }
 
-    /// Put this string on a body owned elsewhere (BowedInstrument), or back on its own with nullptr. The voice
-    /// then reads that body's histories and no longer advances it: the owner advances it once per sample with
-    /// the sum of all strings' bridge forces. Off the audio thread, after prepare().
+    /// Put this string on a body owned elsewhere (BowedInstrument), or back on its own with nullptr. The
+    /// voice then reads that body's histories and no longer advances it: the owner advances it once per
+    /// sample with the sum of all strings' bridge forces. Off the audio thread, after prepare().
     void useSharedBody(BridgeBody* body);
     /// Bridge force of the last step, N.
     double lastBridgeForce() const noexcept;
