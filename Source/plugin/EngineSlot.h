@@ -26,6 +26,8 @@ struct Engine
     double sampleRate = 48000.0;
     physics::BowedInstrument instrument;
     std::array<double, 8> openFrequencies{};
+    std::array<double, 8> impedances{};         ///< Z0 per string, kg/s (editor's Schelleng diagram)
+    std::array<double, 8> bridgeConductances{}; ///< per string, s/kg (schellengConductance)
 };
 
 class EngineSlot

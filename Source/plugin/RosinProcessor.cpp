@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <thread>
 
+#include "RosinEditor.h"
 #include "gesture/MidiBytes.h"
 
 namespace rosin::plugin
@@ -14,6 +16,24 @@ namespace
 constexpr const char* kDefaultProgram = "cello-plastic";
 constexpr double kGainSmoothingSeconds = 0.01;
 const juce::Identifier kStateType{"RosinState"};
+
+// Loss at the string's ends as a bridge conductance G (s/kg), for Schelleng's F_min = Z0^2 v_b G /
+// (2 beta^2 (mu_s - mu_d)): the body's mean real admittance over the string's first ten harmonics, plus the
+// string's own damping of its fundamental expressed as the bridge conductance that would lose as much per
+// period (reflection 1 - 2 Z0 G = exp(-pi eta) => G = pi eta / (2 Z0)). A simple estimate, for display.
+double schellengConductance(const physics::InstrumentConfig& config, std::size_t i)
+{
+    const physics::StringParameters& string = config.strings[i];
+    const double f0 = string.fundamental();
+    double body = 0.0;
+    constexpr int kPoints = 32;
+    for (int k = 0; k < kPoints; ++k)
+        body += config.body.admittance(f0 * std::pow(10.0, k / (kPoints - 1.0))).real();
+    body = std::max(0.0, body / kPoints);
+    const double z0 = string.impedance();
+    const double eta = string.lossFactor(1, string.length, false);
+    return body + (z0 > 0.0 ? 3.14159265358979 * eta / (2.0 * z0) : 0.0);
+}
 } // namespace
 
 RosinProcessor::RosinProcessor()
@@ -27,7 +47,21 @@ RosinProcessor::RosinProcessor()
 
 RosinProcessor::~RosinProcessor()
 {
+    // A host may destroy the processor off the message thread (JUCE's LV2 wrapper runs its own message
+    // thread) while the timer callback is building an engine there: stopTimer() does not wait for it, so wait
+    // here before the members it uses go away.
+    closing_ = true;
     stopTimer();
+    while (timerCallbacksRunning_.load() > 0)
+        std::this_thread::yield();
+}
+
+void RosinProcessor::timerCallback()
+{
+    timerCallbacksRunning_.fetch_add(1);
+    if (!closing_.load())
+        serviceEngineBuilds();
+    timerCallbacksRunning_.fetch_sub(1);
 }
 
 const juce::String RosinProcessor::getProgramName(int index)
@@ -95,7 +129,12 @@ std::unique_ptr<Engine> RosinProcessor::buildEngine(const InstrumentKey& key, in
     engine->instrument.prepare(config, sampleRate_);
     for (int i = 0;
          i < engine->instrument.stringCount() && i < static_cast<int>(engine->openFrequencies.size()); ++i)
-        engine->openFrequencies[static_cast<std::size_t>(i)] = engine->instrument.openFrequency(i);
+    {
+        const auto k = static_cast<std::size_t>(i);
+        engine->openFrequencies[k] = engine->instrument.openFrequency(i);
+        engine->impedances[k] = engine->instrument.config().strings[k].impedance();
+        engine->bridgeConductances[k] = schellengConductance(engine->instrument.config(), k);
+    }
     return engine;
 }
 
@@ -113,6 +152,8 @@ void RosinProcessor::prepareToPlay(double sampleRate, int)
     controller_.prepare(engine.openFrequencies.data(), engine.instrument.stringCount(), sampleRate);
     controllerSerial_ = engine.serial;
     gain_.prepare(kGainSmoothingSeconds, sampleRate);
+    for (auto& d : detectors_)
+        d.prepare(sampleRate);
     resetRequested_ = false;
     runawayResets_ = 0;
     nonFiniteSamples_ = 0;
@@ -180,10 +221,19 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
     {
         instrument.reset();
         controller_.reset();
+        for (auto& d : detectors_)
+            d.reset();
     }
 
     const ParameterSnapshot snapshot = reader_.read(strings);
     controller_.setParameters(snapshot.gesture);
+    for (int s = 0; s < strings; ++s)
+    {
+        // The finger ratio of the previous sample: good enough for the regime's nominal period.
+        const auto k = static_cast<std::size_t>(s);
+        const double ratio = inputs_[k].fingerRatio > 0.0 ? inputs_[k].fingerRatio : 1.0;
+        detectors_[k].setNominalFrequency(engine->openFrequencies[k] / ratio);
+    }
 
     float* out = buffer.getWritePointer(0);
     auto event = midi.cbegin();
@@ -203,6 +253,9 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
         double y = instrument.step(inputs_.data(), outputs_.data());
         if (instrument.recoveredFromRunaway())
             ++runaways;
+        for (int s = 0; s < strings; ++s)
+            detectors_[static_cast<std::size_t>(s)].push(outputs_[static_cast<std::size_t>(s)],
+                                                         inputs_[static_cast<std::size_t>(s)].bowForce);
         y *= gain_.process(snapshot.outputGain);
         if (!std::isfinite(y))
         {
@@ -220,15 +273,43 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
     }
     for (int c = 1; c < buffer.getNumChannels(); ++c)
         buffer.copyFrom(c, 0, buffer, 0, 0, numSamples);
+    publishTelemetry(*engine);
     if (runaways > 0)
         runawayResets_.fetch_add(runaways, std::memory_order_relaxed);
     if (nonFinite > 0)
         nonFiniteSamples_.fetch_add(nonFinite, std::memory_order_relaxed);
 }
 
+void RosinProcessor::publishTelemetry(const Engine& engine) noexcept
+{
+    const int strings = std::min(engine.instrument.stringCount(), Telemetry::kMaxStrings);
+    telemetry_.stringCount.store(strings, std::memory_order_relaxed);
+    for (int s = 0; s < strings; ++s)
+    {
+        const auto k = static_cast<std::size_t>(s);
+        const physics::BowInput& in = inputs_[k];
+        const physics::VoiceSample& out = outputs_[k];
+        StringReadout r;
+        detectors_[k].fillReadout(r);
+        r.openFrequency = static_cast<float>(engine.openFrequencies[k]);
+        r.frequency =
+            static_cast<float>(engine.openFrequencies[k] / (in.fingerRatio > 0.0 ? in.fingerRatio : 1.0));
+        r.temperature = static_cast<float>(out.contactTemperature);
+        r.bowForce = static_cast<float>(in.bowForce);
+        r.beta = static_cast<float>(in.beta);
+        r.bowVelocity = static_cast<float>(in.bowVelocity);
+        r.impedance = static_cast<float>(engine.impedances[k]);
+        r.bridgeConductance = static_cast<float>(engine.bridgeConductances[k]);
+        r.muStatic = static_cast<float>(engine.instrument.voice(s).friction().staticCoefficient(in.bowForce));
+        r.sticking = out.sticking;
+        r.bowing = in.bowForce > 1e-3 && std::abs(in.bowVelocity) > 1e-4;
+        telemetry_.strings[k].publish(r);
+    }
+}
+
 juce::AudioProcessorEditor* RosinProcessor::createEditor()
 {
-    return new juce::GenericAudioProcessorEditor(*this);
+    return new RosinEditor(*this);
 }
 
 void RosinProcessor::getStateInformation(juce::MemoryBlock& destData)

@@ -20,6 +20,8 @@
 #include "FactoryPrograms.h"
 #include "InstrumentSetup.h"
 #include "PluginParameters.h"
+#include "RegimeDetector.h"
+#include "StringTelemetry.h"
 #include "gesture/MidiGestureController.h"
 
 namespace rosin::plugin
@@ -71,9 +73,11 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     int nonFiniteSamples() const noexcept { return nonFiniteSamples_.load(); }
     /// The engine the audio thread uses (tests, offline tools; not thread-safe against a swap).
     const Engine* activeEngine() const noexcept { return slot_.active(); }
+    /// Per-string readouts for the editor, published by processBlock once per block (lock-free).
+    const Telemetry& telemetry() const noexcept { return telemetry_; }
 
   private:
-    void timerCallback() override { serviceEngineBuilds(); }
+    void timerCallback() override;
     std::unique_ptr<Engine> buildEngine(const InstrumentKey& key, int generation);
     void setParameterValue(const char* id, float value);
 
@@ -101,8 +105,14 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     std::array<physics::VoiceSample, gesture::MidiGestureController::kMaxStrings> outputs_{};
     gesture::OnePoleSmoother gain_;
     std::atomic<bool> resetRequested_{false};
+    // The destructor waits for a timer callback in flight (hosts may destroy us off the message thread).
+    std::atomic<bool> closing_{false};
+    std::atomic<int> timerCallbacksRunning_{0};
     std::atomic<int> runawayResets_{0};
     std::atomic<int> nonFiniteSamples_{0};
+    std::array<RegimeDetector, gesture::MidiGestureController::kMaxStrings> detectors_{};
+    Telemetry telemetry_;
+    void publishTelemetry(const Engine& engine) noexcept;
 };
 
 } // namespace rosin::plugin

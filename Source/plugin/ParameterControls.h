@@ -1,0 +1,47 @@
+#pragma once
+// The host parameters as controls: the model selectors (instrument, string, friction law, body) on one row
+// and the gesture knobs in physical units below, each attached to its APVTS parameter.
+#include <memory>
+#include <vector>
+
+#include <juce_audio_processors/juce_audio_processors.h>
+#include <juce_gui_basics/juce_gui_basics.h>
+
+namespace rosin::plugin
+{
+
+class ParameterControls : public juce::Component
+{
+  public:
+    explicit ParameterControls(juce::AudioProcessorValueTreeState& state);
+    ~ParameterControls() override;
+
+    void resized() override;
+
+    static constexpr int kSelectorRowHeight = 28;
+
+  private:
+    struct Knob
+    {
+        juce::Slider slider;
+        juce::Label label;
+        std::unique_ptr<juce::AudioProcessorValueTreeState::SliderAttachment> attachment;
+    };
+    struct Selector
+    {
+        juce::ComboBox box;
+        juce::Label label;
+        std::unique_ptr<juce::AudioProcessorValueTreeState::ComboBoxAttachment> attachment;
+    };
+
+    void addKnob(const char* id, const juce::String& title, const juce::String& suffix, int decimals);
+    void addSelector(const char* id, const juce::String& title);
+
+    juce::AudioProcessorValueTreeState& state_;
+    std::vector<std::unique_ptr<Knob>> knobs_;
+    std::vector<std::unique_ptr<Selector>> selectors_;
+    juce::ToggleButton body_{"Body"};
+    std::unique_ptr<juce::AudioProcessorValueTreeState::ButtonAttachment> bodyAttachment_;
+};
+
+} // namespace rosin::plugin

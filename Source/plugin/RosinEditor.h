@@ -1,0 +1,44 @@
+#pragma once
+// Rosin's editor: the host parameters as controls (ParameterControls), one lane of live readouts per string
+// (StringLane) and a Schelleng diagram of the sounding string (SchellengDiagram). Live values come from the
+// processor's Telemetry, lock-free atomics the audio thread writes once per block; a ~30 Hz timer reads them.
+#include <array>
+#include <memory>
+
+#include <juce_audio_processors/juce_audio_processors.h>
+
+#include "ParameterControls.h"
+#include "SchellengDiagram.h"
+#include "StringLane.h"
+
+namespace rosin::plugin
+{
+
+class RosinProcessor;
+
+class RosinEditor : public juce::AudioProcessorEditor, private juce::Timer
+{
+  public:
+    static constexpr int kDefaultWidth = 900, kDefaultHeight = 560;
+    static constexpr int kLanes = 4;
+
+    explicit RosinEditor(RosinProcessor& processor);
+    ~RosinEditor() override;
+
+    void paint(juce::Graphics& g) override;
+    void resized() override;
+
+    /// Reads the telemetry and updates the readouts now (the timer does this ~30 times a second).
+    void refreshReadouts();
+
+  private:
+    void timerCallback() override { refreshReadouts(); }
+
+    RosinProcessor& processor_;
+    ParameterControls controls_;
+    std::array<std::unique_ptr<StringLane>, kLanes> lanes_;
+    SchellengDiagram schelleng_;
+    int soundingString_ = -1; // index from the lowest; the diagram follows the last bowed string
+};
+
+} // namespace rosin::plugin
