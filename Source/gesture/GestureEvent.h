@@ -21,9 +21,17 @@ struct GestureEvent
 
     Type type = Type::NoteOn;
     int sampleOffset = 0; ///< sample index within the block at which the event applies
-    int channel = 1;      ///< MIDI channel 1..16 (kept for MPE; not used for routing yet)
+    int channel = 1;      ///< MIDI channel 1..16: a note's controllers are its channel's (MPE: per note)
     int number = 0;
     int value = 0;
+
+    /// The same event on another channel: GestureEvent::noteOn(60, 100).onChannel(2).
+    GestureEvent onChannel(int midiChannel) const noexcept
+    {
+        GestureEvent e = *this;
+        e.channel = midiChannel;
+        return e;
+    }
 
     static GestureEvent noteOn(int note, int velocity, int offset = 0)
     {

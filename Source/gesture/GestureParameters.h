@@ -31,11 +31,20 @@ inline constexpr int ccForce = 1;      ///< mod wheel
 inline constexpr int ccSpeed = 11;     ///< expression
 inline constexpr int ccSpeedAlt = 2;   ///< breath
 inline constexpr int ccBeta = 21;      ///< bow position
+inline constexpr int ccSlide = 74;     ///< MPE slide (per note on a member channel): bow position, like CC21
 inline constexpr int ccSustain = 64;   ///< >= 64: keep bowing after note-off
 inline constexpr int ccResetAll = 121; ///< controllers back to their reset values
 inline constexpr int ccAllNotesOff = 123;
 inline constexpr int ccAllSoundOff = 120;
-inline constexpr double pitchBendSemitones = 2.0; ///< full bend = +-2 semitones of finger glide
+/// Full bend = +-2 semitones of finger glide (default; RPN 0 sets it per channel).
+inline constexpr double pitchBendSemitones = 2.0;
+/// MPE member channels' default bend range (MPE spec: +-48 semitones, so a finger can slide across keys).
+inline constexpr double mpeMemberPitchBendSemitones = 48.0;
+/// Keyswitches: notes below every instrument's lowest string (cello C2 = 36, violin G3 = 55) choose the
+/// string of the following notes. keyswitchFirst + i selects string i (0 = lowest); keyswitchAuto returns to
+/// the automatic choice.
+inline constexpr int keyswitchAuto = 23;  ///< B0
+inline constexpr int keyswitchFirst = 24; ///< C1: the lowest string
 
 /// Factor 2^((value - 64) / 32): 0.25 at 0, 1 at 64, 3.9 at 127 (force and speed controllers, pressure).
 double controllerFactor(int value) noexcept;

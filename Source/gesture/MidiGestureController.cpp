@@ -31,31 +31,46 @@ void MidiGestureController::reset() noexcept
     {
         s.stroke.reset();
         s.note = -1;
+        s.channel = 1;
         s.keyDown = s.heldByPedal = false;
         s.finger = 1.0;
-        s.polyPressure = -1;
+        s.polyPressure = -1.0;
     }
-    resetControllers();
+    channels_.resetControllers();
+    keyswitchString_ = -1;
     sustainPedal_ = false;
     sampleCounter_ = 0;
 }
 
-void MidiGestureController::resetControllers() noexcept
+bool MidiGestureController::isKeyswitch(int note) const noexcept
 {
-    ccForce_ = ccSpeed_ = ccBeta_ = 64;
-    channelPressure_ = -1;
-    bendFactor_ = 1.0;
+    // Only below the lowest string (the defaultString tolerance): a keyswitch never hides a playable note.
+    return note >= midimap::keyswitchAuto && note < midimap::keyswitchFirst + count_ &&
+           note + 0.5 < pitchOfFrequency(openFrequencies_[0]);
 }
 
-int MidiGestureController::stringForNote(int note) const noexcept
+int MidiGestureController::stringForNote(int note, int channel) const noexcept
 {
+    if (isKeyswitch(note))
+        return -1;
     if (parameters_.stringOverride >= 0 && parameters_.stringOverride < count_)
         return parameters_.stringOverride;
+    // MPE: one string per member channel; a new note on it while a key is down is a finger change there.
+    if (channels_.isMemberChannel(channel))
+        for (int i = 0; i < count_; ++i)
+        {
+            const auto& s = strings_[static_cast<std::size_t>(i)];
+            if (s.keyDown && s.channel == channel)
+                return i;
+        }
+    if (keyswitchString_ >= 0 && keyswitchString_ < count_)
+        return keyswitchString_;
     const int preferred = defaultString(openFrequencies_.data(), count_, note);
     const auto taken = [&](int i)
     {
         const auto& s = strings_[static_cast<std::size_t>(i)];
-        return s.keyDown && s.note != note && sampleCounter_ - s.noteOnSample < chordWindowSamples_;
+        return s.keyDown && (s.note != note || s.channel != channel) &&
+               sampleCounter_ - s.noteOnSample < chordWindowSamples_;
     };
     // Double stops: a string just taken by another key of the same chord passes the note to the next lower
     // free string, which can always reach it (a lower open pitch, a shorter finger stop).
@@ -72,47 +87,49 @@ double MidiGestureController::fingerRatioFor(int s, int note) const noexcept
 
 void MidiGestureController::handleEvent(const GestureEvent& e) noexcept
 {
+    if (e.channel < 1 || e.channel > MidiChannels::kChannels)
+        return;
     switch (e.type)
     {
     case GestureEvent::Type::NoteOn:
         if (e.value > 0)
-            noteOn(e.number, e.value);
+            noteOn(e.channel, e.number, e.value);
         else
-            noteOff(e.number);
+            noteOff(e.channel, e.number);
         break;
     case GestureEvent::Type::NoteOff:
-        noteOff(e.number);
+        noteOff(e.channel, e.number);
         break;
     case GestureEvent::Type::Controller:
-        controller(e.number, e.value);
+        controller(e.channel, e.number, e.value);
         break;
     case GestureEvent::Type::ChannelPressure:
-        channelPressure_ = std::clamp(e.value, 0, 127);
+        channels_.pressure(e.channel, std::clamp(e.value, 0, 127));
         break;
     case GestureEvent::Type::PolyPressure:
         for (int i = 0; i < count_; ++i)
         {
             auto& s = strings_[static_cast<std::size_t>(i)];
-            if (s.note == e.number)
-                s.polyPressure = std::clamp(e.value, 0, 127);
+            if (s.note == e.number && s.channel == e.channel)
+                s.polyPressure = midimap::controllerFactor(e.value);
         }
         break;
     case GestureEvent::Type::PitchBend:
-    {
-        // Bending up shortens the string: the finger slides towards the bridge.
-        const double semitones =
-            (std::clamp(e.value, 0, 16383) - 8192) / 8192.0 * midimap::pitchBendSemitones;
-        bendFactor_ = std::exp2(-semitones / 12.0);
+        channels_.pitchBend(e.channel, e.value);
         break;
-    }
     }
 }
 
-void MidiGestureController::noteOn(int note, int velocity) noexcept
+void MidiGestureController::noteOn(int channel, int note, int velocity) noexcept
 {
     if (note < 0 || note > 127)
         return;
-    const int index = stringForNote(note);
+    if (isKeyswitch(note))
+    {
+        keyswitchString_ = note == midimap::keyswitchAuto ? -1 : note - midimap::keyswitchFirst;
+        return;
+    }
+    const int index = stringForNote(note, channel);
     auto& s = strings_[static_cast<std::size_t>(index)];
     const double acceleration = parameters_.attackAcceleration * midimap::accelerationScale(velocity);
     const double forceScale = midimap::attackForceScale(velocity);
@@ -125,22 +142,25 @@ void MidiGestureController::noteOn(int note, int velocity) noexcept
     else if (phase == BowStroke::Phase::Idle)
         // From rest; strokes alternate down-bow / up-bow, the first one after reset is a down-bow.
         s.stroke.startFromRest(s.stroke.strokesFromRest() == 0 ? 1.0 : -s.stroke.direction(), acceleration,
-                               forceScale, std::clamp(finger * bendFactor_, 0.1, 1.0));
+                               forceScale, std::clamp(finger * channels_.controls(channel).finger, 0.1, 1.0));
     // else: another note on a bowing string is a finger change under the moving bow (legato).
     s.note = note;
+    s.channel = channel;
     s.finger = finger;
     s.keyDown = true;
     s.heldByPedal = false;
-    s.polyPressure = -1;
+    s.polyPressure = -1.0;
     s.noteOnSample = sampleCounter_;
 }
 
-void MidiGestureController::noteOff(int note) noexcept
+void MidiGestureController::noteOff(int channel, int note) noexcept
 {
+    if (isKeyswitch(note))
+        return;
     for (int i = 0; i < count_; ++i)
     {
         auto& s = strings_[static_cast<std::size_t>(i)];
-        if (s.note != note || !s.keyDown)
+        if (s.note != note || s.channel != channel || !s.keyDown)
             continue;
         s.keyDown = false;
         if (sustainPedal_)
@@ -150,21 +170,11 @@ void MidiGestureController::noteOff(int note) noexcept
     }
 }
 
-void MidiGestureController::controller(int number, int value) noexcept
+void MidiGestureController::controller(int channel, int number, int value) noexcept
 {
     value = std::clamp(value, 0, 127);
     switch (number)
     {
-    case midimap::ccForce:
-        ccForce_ = value;
-        break;
-    case midimap::ccSpeed:
-    case midimap::ccSpeedAlt:
-        ccSpeed_ = value;
-        break;
-    case midimap::ccBeta:
-        ccBeta_ = value;
-        break;
     case midimap::ccSustain:
         sustainPedal_ = value >= 64;
         if (!sustainPedal_)
@@ -178,14 +188,12 @@ void MidiGestureController::controller(int number, int value) noexcept
                 }
             }
         break;
-    case midimap::ccResetAll:
-        resetControllers();
-        break;
     case midimap::ccAllNotesOff:
     case midimap::ccAllSoundOff:
         liftAll();
         break;
     default:
+        channels_.controller(channel, number, value);
         break;
     }
 }
@@ -200,28 +208,20 @@ void MidiGestureController::liftAll() noexcept
     }
 }
 
-double MidiGestureController::forceFactor(const StringState& s) const noexcept
-{
-    const int pressure = s.polyPressure >= 0 ? s.polyPressure : channelPressure_;
-    return midimap::controllerFactor(ccForce_) * (pressure >= 0 ? midimap::controllerFactor(pressure) : 1.0);
-}
-
 void MidiGestureController::next(physics::BowInput* inputs) noexcept
 {
     ++sampleCounter_;
     const auto& p = parameters_;
-    const double speed = std::clamp(p.bowSpeed * midimap::controllerFactor(ccSpeed_), ranges::bowSpeed.min,
-                                    ranges::bowSpeed.max);
-    const double beta =
-        std::clamp(p.beta * midimap::betaControllerFactor(ccBeta_), ranges::beta.min, ranges::beta.max);
     for (int i = 0; i < count_; ++i)
     {
         auto& s = strings_[static_cast<std::size_t>(i)];
+        const ChannelControls c = channels_.controls(s.channel);
+        const double pressure = s.polyPressure >= 0.0 ? s.polyPressure : c.pressure;
         StrokeTargets t;
-        t.force = std::clamp(p.bowForce * forceFactor(s), ranges::bowForce.min, ranges::bowForce.max);
-        t.speed = speed;
-        t.beta = beta;
-        t.finger = std::clamp(s.finger * bendFactor_, 0.1, 1.0);
+        t.force = std::clamp(p.bowForce * (c.force * pressure), ranges::bowForce.min, ranges::bowForce.max);
+        t.speed = std::clamp(p.bowSpeed * c.speed, ranges::bowSpeed.min, ranges::bowSpeed.max);
+        t.beta = std::clamp(p.beta * c.beta, ranges::beta.min, ranges::beta.max);
+        t.finger = std::clamp(s.finger * c.finger, 0.1, 1.0);
         inputs[i] = s.stroke.next(t);
     }
 }
