@@ -14,6 +14,11 @@ ParameterControls::ParameterControls(juce::AudioProcessorValueTreeState& state) 
     body_.setTooltip("Instrument body at the bridge (off: rigid bridge)");
     bodyAttachment_ =
         std::make_unique<juce::AudioProcessorValueTreeState::ButtonAttachment>(state_, ids::body, body_);
+    addAndMakeVisible(ear_);
+    ear_.setTooltip(
+        "Intonation by ear: the finger follows the pitch the string sounds (off: finger geometry)");
+    earAttachment_ =
+        std::make_unique<juce::AudioProcessorValueTreeState::ButtonAttachment>(state_, ids::intonation, ear_);
 
     addKnob(ids::bowForce, "Bow force", " N", 3);
     addKnob(ids::bowSpeed, "Bow speed", " m/s", 3);
@@ -77,7 +82,8 @@ void ParameterControls::resized()
         selectors_[i]->box.setBounds(row.removeFromLeft(boxWidths[i]).reduced(0, 2));
         row.removeFromLeft(12);
     }
-    body_.setBounds(row.removeFromLeft(80));
+    body_.setBounds(row.removeFromLeft(70));
+    ear_.setBounds(row.removeFromLeft(150));
 
     area.removeFromTop(8);
     const int n = static_cast<int>(knobs_.size());

@@ -1,6 +1,6 @@
 #pragma once
-// The host parameters as controls: the model selectors (instrument, string, friction law, body) on one row
-// and the gesture knobs in physical units below, each attached to its APVTS parameter.
+// The host parameters as controls: the model selectors (instrument, string, friction law, body, intonation)
+// on one row and the gesture knobs in physical units below, each attached to its APVTS parameter.
 #include <memory>
 #include <vector>
 
@@ -42,6 +42,8 @@ class ParameterControls : public juce::Component
     std::vector<std::unique_ptr<Selector>> selectors_;
     juce::ToggleButton body_{"Body"};
     std::unique_ptr<juce::AudioProcessorValueTreeState::ButtonAttachment> bodyAttachment_;
+    juce::ToggleButton ear_{"Intonation by ear"};
+    std::unique_ptr<juce::AudioProcessorValueTreeState::ButtonAttachment> earAttachment_;
 };
 
 } // namespace rosin::plugin

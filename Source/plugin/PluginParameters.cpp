@@ -5,11 +5,12 @@
 namespace rosin::plugin
 {
 
-const std::array<const char*, 10>& allParameterIds()
+const std::array<const char*, 11>& allParameterIds()
 {
-    static const std::array<const char*, 10> list = {
-        ids::bowForce, ids::bowSpeed,           ids::attackAcceleration, ids::beta,       ids::friction,
-        ids::body,     ids::ambientTemperature, ids::outputLevel,        ids::instrument, ids::string};
+    static const std::array<const char*, 11> list = {
+        ids::bowForce,   ids::bowSpeed, ids::attackAcceleration, ids::beta,
+        ids::friction,   ids::body,     ids::ambientTemperature, ids::outputLevel,
+        ids::instrument, ids::string,   ids::intonation};
     return list;
 }
 
@@ -70,6 +71,7 @@ juce::AudioProcessorValueTreeState::ParameterLayout createParameterLayout()
                                                             juce::StringArray{"cello", "violin"}, 0));
     layout.add(std::make_unique<juce::AudioParameterChoice>(
         pid(ids::string), "String", juce::StringArray{"auto", "I", "II", "III", "IV"}, 0));
+    layout.add(std::make_unique<juce::AudioParameterBool>(pid(ids::intonation), "Intonation by ear", true));
     return layout;
 }
 
@@ -82,10 +84,11 @@ ParameterReader::ParameterReader(juce::AudioProcessorValueTreeState& state)
       ambientTemperature_(state.getRawParameterValue(ids::ambientTemperature)),
       outputLevel_(state.getRawParameterValue(ids::outputLevel)),
       instrument_(state.getRawParameterValue(ids::instrument)),
-      string_(state.getRawParameterValue(ids::string))
+      string_(state.getRawParameterValue(ids::string)),
+      intonation_(state.getRawParameterValue(ids::intonation))
 {
     jassert(bowForce_ && bowSpeed_ && attackAcceleration_ && beta_ && friction_ && body_ &&
-            ambientTemperature_ && outputLevel_ && instrument_ && string_);
+            ambientTemperature_ && outputLevel_ && instrument_ && string_ && intonation_);
 }
 
 InstrumentKey ParameterReader::readKey() const noexcept
@@ -110,6 +113,7 @@ ParameterSnapshot ParameterReader::read(int stringCount) const noexcept
     // String I is the highest, as string players number them; the controller counts from the lowest.
     s.gesture.stringOverride = s.stringChoice == 0 ? -1 : juce::jmax(0, stringCount - s.stringChoice);
     s.key = readKey();
+    s.intonationByEar = intonation_->load() >= 0.5f;
     s.outputGain = std::pow(10.0, outputLevel_->load() / 20.0);
     return s;
 }

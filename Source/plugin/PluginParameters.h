@@ -23,11 +23,12 @@ inline constexpr const char* ambientTemperature = "ambientTemperature"; ///< deg
 inline constexpr const char* outputLevel = "outputLevel";               ///< dB, -60..+12
 inline constexpr const char* instrument = "instrument";                 ///< choice: cello, violin
 inline constexpr const char* string = "string";                         ///< choice: auto, I..IV
+inline constexpr const char* intonation = "intonation";                 ///< bool: the player's ear corrects
 inline constexpr int version = 1;
 } // namespace ids
 
 /// Every parameter ID, for tests and fuzzers.
-const std::array<const char*, 10>& allParameterIds();
+const std::array<const char*, 11>& allParameterIds();
 
 /// The calibration ambient of the thermal laws: ContactParameters::ambientOffset = T - 20 C.
 inline constexpr double kCalibrationAmbientCelsius = 20.0;
@@ -53,6 +54,7 @@ struct ParameterSnapshot
     InstrumentKey key;
     double outputGain = 1.0; ///< linear, per N of bridge force
     int stringChoice = 0;    ///< 0 auto, 1..4 = string I (highest) .. IV
+    bool intonationByEar = true;
 };
 
 /// Direct pointers to the parameters' atomics: the audio thread never looks a parameter up by string.
@@ -75,6 +77,7 @@ class ParameterReader
     std::atomic<float>* outputLevel_;
     std::atomic<float>* instrument_;
     std::atomic<float>* string_;
+    std::atomic<float>* intonation_;
 };
 
 } // namespace rosin::plugin

@@ -149,7 +149,7 @@ void RosinProcessor::prepareToPlay(double sampleRate, int)
     prepared_ = true;
 
     const Engine& engine = *slot_.active();
-    controller_.prepare(engine.openFrequencies.data(), engine.instrument.stringCount(), sampleRate);
+    prepareGesture(engine);
     controllerSerial_ = engine.serial;
     gain_.prepare(kGainSmoothingSeconds, sampleRate);
     for (auto& d : detectors_)
@@ -157,6 +157,15 @@ void RosinProcessor::prepareToPlay(double sampleRate, int)
     resetRequested_ = false;
     runawayResets_ = 0;
     nonFiniteSamples_ = 0;
+}
+
+void RosinProcessor::prepareGesture(const Engine& engine)
+{
+    const int strings = engine.instrument.stringCount();
+    controller_.prepare(engine.openFrequencies.data(), strings, engine.sampleRate);
+    for (int s = 0; s < strings; ++s)
+        ears_[static_cast<std::size_t>(s)].prepare(engine.openFrequencies[static_cast<std::size_t>(s)],
+                                                   engine.sampleRate);
 }
 
 void RosinProcessor::releaseResources()
@@ -214,7 +223,7 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
             sameStrings =
                 controller_.openFrequency(i) == engine->openFrequencies[static_cast<std::size_t>(i)];
         if (!sameStrings)
-            controller_.prepare(engine->openFrequencies.data(), strings, engine->sampleRate);
+            prepareGesture(*engine);
         controllerSerial_ = engine->serial;
     }
     if (resetRequested_.exchange(false))
@@ -223,10 +232,14 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
         controller_.reset();
         for (auto& d : detectors_)
             d.reset();
+        for (auto& ear : ears_)
+            ear.reset();
     }
 
     const ParameterSnapshot snapshot = reader_.read(strings);
     controller_.setParameters(snapshot.gesture);
+    for (int s = 0; s < strings; ++s)
+        ears_[static_cast<std::size_t>(s)].setEnabled(snapshot.intonationByEar);
     for (int s = 0; s < strings; ++s)
     {
         // The finger ratio of the previous sample: good enough for the regime's nominal period.
@@ -250,12 +263,20 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
                 controller_.handleEvent(e);
         }
         controller_.next(inputs_.data());
+        for (int s = 0; s < strings; ++s)
+        {
+            auto& in = inputs_[static_cast<std::size_t>(s)];
+            in.fingerRatio = ears_[static_cast<std::size_t>(s)].finger(in.fingerRatio);
+        }
         double y = instrument.step(inputs_.data(), outputs_.data());
         if (instrument.recoveredFromRunaway())
             ++runaways;
         for (int s = 0; s < strings; ++s)
-            detectors_[static_cast<std::size_t>(s)].push(outputs_[static_cast<std::size_t>(s)],
-                                                         inputs_[static_cast<std::size_t>(s)].bowForce);
+        {
+            const auto k = static_cast<std::size_t>(s);
+            detectors_[k].push(outputs_[k], inputs_[k].bowForce);
+            ears_[k].listen(outputs_[k].sticking, outputs_[k].bowPointVelocity, outputs_[k].bowVelocity);
+        }
         y *= gain_.process(snapshot.outputGain);
         if (!std::isfinite(y))
         {

@@ -22,6 +22,7 @@
 #include "PluginParameters.h"
 #include "RegimeDetector.h"
 #include "StringTelemetry.h"
+#include "gesture/IntonationEar.h"
 #include "gesture/MidiGestureController.h"
 
 namespace rosin::plugin
@@ -111,8 +112,11 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     std::atomic<int> runawayResets_{0};
     std::atomic<int> nonFiniteSamples_{0};
     std::array<RegimeDetector, gesture::MidiGestureController::kMaxStrings> detectors_{};
+    std::array<gesture::IntonationEar, gesture::MidiGestureController::kMaxStrings> ears_{};
     Telemetry telemetry_;
     void publishTelemetry(const Engine& engine) noexcept;
+    /// The gesture controller and the ears for the engine's strings (fixed-size state: no allocation).
+    void prepareGesture(const Engine& engine);
 };
 
 } // namespace rosin::plugin

@@ -2,13 +2,15 @@
 // measured from the rendered audio: the strongest of the first four harmonics near k f_note (Hann window,
 // 2^18-point FFT, parabolic interpolation), divided by k, over 0.7..1.5 s (after the attack).
 //
-// KNOWN FAILURES (reported, not loosened): both tests currently miss 5 cents, so CTest runs them as
-// plugin.pitch.* with WILL_FAIL (tests/plugin/CMakeLists.txt); the DISABLED_ prefix keeps them out of the
-// discovered list. Measured: cello worst -5.5 cents at 0.5 N (F2; -8.2 cents at 1 N: force flattening on the
-// low strings), violin +5.4..+9.2 cents for G6 and above at 0.3 N (short stopped lengths: bending stiffness
-// raises the stopped string above f_open / finger ratio). Drop WILL_FAIL and DISABLED_ once they pass.
+// The plugin plays with its default "intonation by ear" on (gesture/IntonationEar.h): like a cellist, the
+// finger follows the pitch the string sounds. Without it the finger geometry alone misses 5 cents (measured:
+// cello -5.5 cents at 0.5 N on F2, force flattening; violin up to +9 cents above G6, bending stiffness of
+// short stopped lengths), which is physics, not a bug; IntonationEarTest checks the ear itself in closed
+// loop.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
 
 #include "PluginTestSupport.h"
@@ -27,6 +29,8 @@ struct PitchCase
     const char* program;
     int lowNote, highNote;
     float force;
+    std::array<int, 4> openNotes;
+    bool checkOpenStrings = true; ///< false near F_max: open strings flatten and have no finger to correct
 };
 
 double measuredPitchCents(const std::vector<float>& audio, int note)
@@ -52,7 +56,7 @@ double measuredPitchCents(const std::vector<float>& audio, int note)
 
 void checkRange(const PitchCase& c)
 {
-    double worst = 0.0;
+    double worst = 0.0, worstOpen = 0.0;
     int worstNote = -1;
     for (int note = c.lowNote; note <= c.highNote; ++note)
     {
@@ -70,22 +74,34 @@ void checkRange(const PitchCase& c)
         settings.tailSeconds = 0.0;
         const auto r = plugin::renderMidi(p, seq, settings);
         const double cents = measuredPitchCents(r.audio, note);
+        const bool open = std::find(c.openNotes.begin(), c.openNotes.end(), note) != c.openNotes.end();
+        if (open && std::abs(cents) > std::abs(worstOpen))
+            worstOpen = cents;
+        if (open && !c.checkOpenStrings)
+            continue;
         EXPECT_LT(std::abs(cents), 5.0) << c.program << " note " << note << ": " << cents << " cents";
         if (std::abs(cents) > std::abs(worst))
             worst = cents, worstNote = note;
     }
-    std::printf("[ figures  ] %s notes %d..%d at %.2f N: worst pitch error %+.2f cents (note %d)\n",
-                c.program, c.lowNote, c.highNote, c.force, worst, worstNote);
+    std::printf("[ figures  ] %s notes %d..%d at %.2f N: worst pitch error %+.2f cents (note %d%s); open "
+                "strings worst %+.2f cents\n",
+                c.program, c.lowNote, c.highNote, c.force, worst, worstNote,
+                c.checkOpenStrings ? "" : ", stopped notes", worstOpen);
 }
 
-TEST(PluginPitch, DISABLED_CelloNotesC2ToA5SoundWithinFiveCents)
+TEST(PluginPitch, CelloNotesC2ToA5SoundWithinFiveCents)
 {
-    checkRange({"cello-plastic", 36, 81, 0.5f});
+    checkRange({"cello-plastic", 36, 81, 0.5f, {36, 43, 50, 57}});
 }
 
-TEST(PluginPitch, DISABLED_ViolinNotesG3ToE7SoundWithinFiveCents)
+TEST(PluginPitch, CelloStoppedNotesSoundWithinFiveCentsAtOneNewton)
 {
-    checkRange({"violin-thermal", 55, 100, 0.3f});
+    checkRange({"cello-plastic", 36, 81, 1.0f, {36, 43, 50, 57}, false});
+}
+
+TEST(PluginPitch, ViolinNotesG3ToE7SoundWithinFiveCents)
+{
+    checkRange({"violin-thermal", 55, 100, 0.3f, {55, 62, 69, 76}});
 }
 
 } // namespace
