@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "RosinEditor.h"
+#include "SoftClip.h"
 #include "gesture/MidiBytes.h"
 
 namespace rosin::plugin
@@ -283,7 +284,7 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
             y = 0.0;
             ++nonFinite;
         }
-        out[i] = static_cast<float>(std::clamp(y, -kOutputClamp, kOutputClamp));
+        out[i] = static_cast<float>(softClip(y));
     }
     for (; event != end; ++event) // events stamped past the block's end (malformed host data)
     {

@@ -4,11 +4,11 @@
 //
 // Audio thread (processBlock): no allocation, lock or system call. Parameters are read once per block into a
 // plain snapshot (direct atomic pointers); MIDI is applied at its sample offset, so the output does not
-// depend on the block size; denormals are flushed; the output is sanitised (non-finite -> 0, clamped to +-1)
-// and a voice that runs away resets itself and is counted. Builder side (message-thread timer, prepareToPlay,
-// or serviceEngineBuilds() from an offline renderer): a change of instrument, friction law, body, ambient
-// temperature or program rebuilds the instrument there and hands it over through EngineSlot (lock-free). It
-// takes effect at the next block boundary.
+// depend on the block size; denormals are flushed; the output is sanitised (non-finite -> 0, then a soft clip
+// below +-1: SoftClip.h) and a voice that runs away resets itself and is counted. Builder side
+// (message-thread timer, prepareToPlay, or serviceEngineBuilds() from an offline renderer): a change of
+// instrument, friction law, body, ambient temperature or program rebuilds the instrument there and hands it
+// over through EngineSlot (lock-free). It takes effect at the next block boundary.
 #include <array>
 #include <atomic>
 #include <mutex>
@@ -32,7 +32,6 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
 {
   public:
     static constexpr int kStateVersion = 1;
-    static constexpr double kOutputClamp = 1.0;
 
     RosinProcessor();
     ~RosinProcessor() override;
