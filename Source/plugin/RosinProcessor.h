@@ -50,6 +50,8 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     bool acceptsMidi() const override { return true; }
     bool producesMidi() const override { return false; }
     bool isMidiEffect() const override { return false; }
+    /// MPE lower zone (gesture/MidiChannels.h): hosts may route per-note expression to us.
+    bool supportsMPE() const override { return true; }
     double getTailLengthSeconds() const override { return 3.0; }
 
     int getNumPrograms() override { return static_cast<int>(programs_.size()); }
