@@ -26,6 +26,7 @@ struct BowedStringVoice::Impl
     StringParameters string;
     double openLength = 0.69, length = 0.69, beta = 0.1, fingerRatio = 1.0;
     bool stopped = false, torsionOn = true;
+    double lossScale = 1.0;                    // VoiceConfig::lossScale
     double T = 1.0 / 48000.0, modeLimit = 0.0; // rad/s
 
     ModalBank trans, tors;
@@ -69,7 +70,7 @@ void BowedStringVoice::Impl::computeTransSpecs()
         double omega = string.modeAngularFrequency(n, length);
         transActive[i] = omega < modeLimit ? 1.0 : 0.0;
         omega = std::min(omega, modeLimit); // inactive modes are parked below the limit with zero weight
-        transSpecs[i] = {omega, string.lossFactor(n, length, stopped)};
+        transSpecs[i] = {omega, lossScale * string.lossFactor(n, length, stopped)};
     }
 }
 
@@ -223,6 +224,9 @@ void BowedStringVoice::prepare(const VoiceConfig& config, std::unique_ptr<Fricti
     s.fingerRatio = 1.0;
     s.stopped = false;
     s.torsionOn = config.torsion;
+    if (!(config.lossScale > 0.0))
+        throw std::invalid_argument("BowedStringVoice::prepare: lossScale must be > 0");
+    s.lossScale = config.lossScale;
     s.buildModes(config, sampleRate);
     s.updateWeights();
     friction_ = std::move(friction);

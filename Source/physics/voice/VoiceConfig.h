@@ -16,6 +16,9 @@ struct VoiceConfig
     double maxModeFrequencyRatio = 0.45; ///< keep modes below this fraction of the sample rate
     int maxTransverseModes = 400;        ///< hard cap on transverse modes
     int maxTorsionalModes = 80;          ///< hard cap on torsional modes
+    /// Multiplies every transverse mode's loss factor: string losses above the nominal loss law (the
+    /// discrepancy workflow's "extra-string-damping"; 1 = the seed's law).
+    double lossScale = 1.0;
 };
 
 } // namespace rosin::physics

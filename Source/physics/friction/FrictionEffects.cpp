@@ -1,0 +1,19 @@
+#include "FrictionEffects.h"
+
+#include "JunctionGrowthLaw.h"
+#include "StickingCreepLaw.h"
+
+namespace rosin::physics
+{
+
+std::unique_ptr<FrictionLaw> withEffects(std::unique_ptr<FrictionLaw> law, const FrictionEffects& effects)
+{
+    if (effects.junctionGrowth > 0.0)
+        law = std::make_unique<JunctionGrowthLaw>(std::move(law), effects.junctionGrowth,
+                                                  effects.junctionGrowthTime);
+    if (effects.creepResistance > 0.0)
+        law = std::make_unique<StickingCreepLaw>(std::move(law), effects.creepResistance);
+    return law;
+}
+
+} // namespace rosin::physics

@@ -1,0 +1,52 @@
+#include "JunctionGrowthLaw.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace rosin::physics
+{
+
+JunctionGrowthLaw::JunctionGrowthLaw(std::unique_ptr<FrictionLaw> inner, double growth, double tauSeconds)
+    : inner_(std::move(inner)), growth_(growth), tau_(tauSeconds)
+{
+    if (!inner_)
+        throw std::invalid_argument("JunctionGrowthLaw: no friction law to wrap");
+    if (!(growth >= 0.0) || !(tauSeconds > 0.0))
+        throw std::invalid_argument("JunctionGrowthLaw: growth must be >= 0 and tau > 0 s");
+}
+
+void JunctionGrowthLaw::prepare(double sampleRate)
+{
+    T_ = 1.0 / sampleRate;
+    inner_->prepare(sampleRate);
+    holdSamples_ = 0;
+}
+
+void JunctionGrowthLaw::reset() noexcept
+{
+    inner_->reset();
+    holdSamples_ = 0;
+}
+
+double JunctionGrowthLaw::growthFactor() const noexcept
+{
+    return 1.0 + growth_ * std::log1p(holdTime() / tau_);
+}
+
+JunctionSolution JunctionGrowthLaw::solve(const JunctionInput& in) noexcept
+{
+    JunctionInput aged = in;
+    aged.bowForce = in.bowForce * growthFactor();
+    const JunctionSolution s = inner_->solve(aged);
+    // The hold time counts samples stuck so far; a sliding sample breaks the junctions.
+    holdSamples_ = s.sticking ? holdSamples_ + 1 : 0;
+    return s;
+}
+
+double JunctionGrowthLaw::staticCoefficient(double bowForce) const noexcept
+{
+    const double g = growthFactor();
+    return inner_->staticCoefficient(bowForce * g) * g;
+}
+
+} // namespace rosin::physics
