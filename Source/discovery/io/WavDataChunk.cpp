@@ -1,0 +1,62 @@
+#include "WavDataChunk.h"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <fstream>
+
+namespace rosin::discovery
+{
+
+namespace
+{
+std::uint64_t littleEndian(const unsigned char* bytes, int count)
+{
+    std::uint64_t value = 0;
+    for (int i = count - 1; i >= 0; --i)
+        value = (value << 8) | bytes[i];
+    return value;
+}
+} // namespace
+
+std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
+{
+    std::error_code ec;
+    const std::uint64_t size = std::filesystem::file_size(file, ec);
+    std::ifstream in(file, std::ios::binary);
+    if (ec || !in)
+        return std::nullopt;
+    std::array<unsigned char, 12> riff{};
+    if (!in.read(reinterpret_cast<char*>(riff.data()), riff.size()))
+        return std::nullopt;
+    const bool rf64 = std::memcmp(riff.data(), "RF64", 4) == 0;
+    if ((!rf64 && std::memcmp(riff.data(), "RIFF", 4) != 0) || std::memcmp(riff.data() + 8, "WAVE", 4) != 0)
+        return std::nullopt;
+
+    std::uint64_t position = 12, rf64DataBytes = 0;
+    std::array<unsigned char, 16> header{};
+    while (position + 8 <= size)
+    {
+        in.seekg(static_cast<std::streamoff>(position));
+        if (!in.read(reinterpret_cast<char*>(header.data()), 8))
+            return std::nullopt;
+        const std::uint64_t length = littleEndian(header.data() + 4, 4);
+        const std::uint64_t body = position + 8;
+        if (std::memcmp(header.data(), "data", 4) == 0)
+        {
+            WavDataChunk chunk;
+            chunk.offset = body;
+            chunk.declaredBytes = rf64 && length == 0xffffffffu ? rf64DataBytes : length;
+            chunk.presentBytes = std::min(chunk.declaredBytes, size - body);
+            return chunk;
+        }
+        // ds64: riffSize (8 bytes), then dataSize (8 bytes), which replaces the data chunk's 32-bit size.
+        if (rf64 && std::memcmp(header.data(), "ds64", 4) == 0 && length >= 16 &&
+            in.read(reinterpret_cast<char*>(header.data()), 16))
+            rf64DataBytes = littleEndian(header.data() + 8, 8);
+        position = body + length + (length & 1); // chunks are padded to even sizes
+    }
+    return std::nullopt;
+}
+
+} // namespace rosin::discovery

@@ -1,0 +1,24 @@
+#pragma once
+// Where a WAV file's sample data starts, how long its header says it is and how much of it the file holds.
+// JUCE's WAV reader trusts the header and fills a truncated file's missing samples with zeros; this lets
+// readTrialSignals tell a truncated file from silence.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace rosin::discovery
+{
+
+struct WavDataChunk
+{
+    std::uint64_t offset = 0;        ///< of the first sample byte
+    std::uint64_t declaredBytes = 0; ///< as the header says (RF64: from the ds64 chunk)
+    std::uint64_t presentBytes = 0;  ///< what the file actually holds from `offset`, at most declaredBytes
+};
+
+/// Walks the RIFF (or RF64) chunks to the "data" chunk. std::nullopt when the file is not RIFF/WAVE or has
+/// no data chunk header.
+std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file);
+
+} // namespace rosin::discovery
