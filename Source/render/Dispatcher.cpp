@@ -5,6 +5,7 @@
 
 #include "CommandLine.h"
 #include "RenderCommand.h"
+#include "ScanCommand.h"
 
 #ifndef ROSIN_VERSION
 #define ROSIN_VERSION "unknown"
@@ -23,10 +24,12 @@ struct Command
     std::string (*help)();
 };
 
-// One entry (and one file) per subcommand; later: scan, discover, synth-data.
+// One entry (and one file) per subcommand; later: discover, synth-data.
 const Command kCommands[] = {
     {"render", "render a bow gesture to a WAV of the bridge force (and a probe of internal channels)",
      runRender, renderHelp},
+    {"scan", "Schelleng and Guettler playability diagrams over a grid of bowings (all cores, resumable)",
+     runScan, scanHelp},
 };
 
 const Command* findCommand(const std::string& name)
@@ -56,7 +59,8 @@ std::string usage()
     text += "\n"
             "All quantities are SI (N, m, s, m/s). Errors name the file or option, the field and what was\n"
             "expected.\n"
-            "exit status: 0 success, 1 bad value, file or preset (or a failed render), 2 usage error\n";
+            "exit status: 0 success, 1 bad value, file or preset (or a failed render), 2 usage error,\n"
+            "128+signal for a scan stopped by Ctrl-C or SIGTERM (resumable)\n";
     return text;
 }
 

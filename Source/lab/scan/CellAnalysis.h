@@ -1,0 +1,41 @@
+#pragma once
+// From one trial's per-sample output to its scan.csv row, with the lab's analyses (physics reference 7):
+//  * the first slip from the solver's state (lab::firstSlipFromState): mu_s, the jump, its time;
+//  * the steady regime over the end of the trial (lab::classifyFromVoice, flybacks only): Guettler the last
+//    20 nominal periods, Schelleng the second half of the time after the ramp (at least 20 periods);
+//  * the transient (lab::measureTransient on the flyback episodes, reference 7.3: 5 % period tolerance, a run
+//    of >= 5 Helmholtz periods lasting to the end of the analysed window, cap 20 periods). The window is the
+//    first 40 periods after the first slip (see addTransient); fewer than 20 periods of trial after the first
+//    slip leave the transient empty (seed 001's "x" pixels). Slip durations are not checked: the thermal
+//    laws end a flyback gently, and their steady flybacks last up to ~2 beta P (the reference's "loose"
+//    limit), so the check rejected steady Helmholtz motion of the plastic law. The period is the steady one
+//    measured at the end when the trial ends in one-slip-per-period motion within +-10 % of the nominal P
+//    (Helmholtz or S-motion: near F_max a string on a body is flattened by a few %, which the 5 % tolerance
+//    about the nominal P would count as failure), else the nominal P = 1/f0.
+#include <cstddef>
+#include <vector>
+
+#include "CellResult.h"
+#include "ScanSpec.h"
+#include "physics/voice/BowedStringVoice.h"
+
+namespace rosin::scan
+{
+
+/// Periods of the Guettler steady-regime window, and the least a Schelleng window may have.
+inline constexpr double kSteadyWindowPeriods = 20.0;
+/// Seed 001's cap: transients of 20 periods or more are "not reached".
+inline constexpr double kTransientCapPeriods = 20.0;
+
+struct TrialContext
+{
+    ScanKind kind = ScanKind::Guettler;
+    CellSettings cell;
+    double sampleRate = 48000.0;
+    double periodSamples = 0.0; ///< nominal P = fs / f0
+    std::size_t rampEnd = 0;    ///< first sample at the final bow speed (Schelleng)
+};
+
+CellResult analyseTrial(const std::vector<physics::VoiceSample>& samples, const TrialContext& context);
+
+} // namespace rosin::scan

@@ -1,0 +1,62 @@
+#include "Figures.h"
+
+#include <cstdlib>
+#include <sys/wait.h>
+
+#ifndef ROSIN_FIGURE_SCRIPT
+#define ROSIN_FIGURE_SCRIPT ""
+#endif
+
+namespace rosin::scan
+{
+
+namespace
+{
+std::string quoted(const std::string& text)
+{
+    std::string q = "'";
+    for (const char c : text)
+        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+int shellStatus(const std::string& command)
+{
+    const int raw = std::system(command.c_str());
+    return raw != -1 && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+} // namespace
+
+std::string figureScriptPath()
+{
+    const char* overridden = std::getenv("ROSIN_FIGURE_SCRIPT");
+    return overridden != nullptr && *overridden != '\0' ? overridden : ROSIN_FIGURE_SCRIPT;
+}
+
+bool drawFigures(const std::filesystem::path& dir, std::ostream& err)
+{
+    const std::string script = figureScriptPath();
+    const char* keep = "; scan.csv and scan.json are complete (use --no-figures to skip figures)\n";
+    std::error_code ec;
+    if (script.empty() || !std::filesystem::is_regular_file(script, ec))
+    {
+        err << "warning: figures not drawn: the figure script "
+            << (script.empty() ? "(none built in)" : script) << " is missing" << keep;
+        return false;
+    }
+    if (shellStatus("command -v python3 >/dev/null 2>&1") != 0)
+    {
+        err << "warning: figures not drawn: python3 is not installed (with matplotlib and numpy)" << keep;
+        return false;
+    }
+    const int status = shellStatus("python3 " + quoted(script) + " " + quoted(dir.string()));
+    if (status != 0)
+    {
+        err << "warning: figures not drawn: python3 " << script << " " << dir.string()
+            << " exited with status " << status << " (are matplotlib and numpy installed?)" << keep;
+        return false;
+    }
+    return true;
+}
+
+} // namespace rosin::scan

@@ -1,0 +1,219 @@
+#include "SpecJson.h"
+
+#include "Variations.h"
+#include "config/ConfigError.h"
+
+namespace rosin::scan
+{
+
+namespace
+{
+using nlohmann::json;
+constexpr const char* kFormat = "rosin-scan-spec/1";
+
+json stringJson(const physics::StringParameters& s)
+{
+    return {{"name", s.name},
+            {"tension", s.tension},
+            {"massPerLength", s.massPerLength},
+            {"length", s.length},
+            {"bendingStiffness", s.bendingStiffness},
+            {"lossF", s.lossF},
+            {"lossB", s.lossB},
+            {"lossA", s.lossA},
+            {"stoppedLossF", s.stoppedLossF},
+            {"torsionalWaveSpeed", s.torsionalWaveSpeed},
+            {"torsionalQ", s.torsionalQ},
+            {"torsionalImpedance", s.torsionalImpedance},
+            {"source", s.source}};
+}
+
+json geometryJson(const physics::ContactGeometry& g)
+{
+    return {{"radius", g.radius},
+            {"referenceForce", g.referenceForce},
+            {"layerThickness", g.layerThickness},
+            {"scaling", scalingName(g.scaling)}};
+}
+
+json contactJson(const physics::ContactParameters& c)
+{
+    return {{"rig", geometryJson(c.rig)},
+            {"calibration", geometryJson(c.calibration)},
+            {"conductivity", c.material.conductivity},
+            {"volumetricHeatCapacity", c.material.volumetricHeatCapacity},
+            {"advectionWidthRatio", c.material.advectionWidthRatio},
+            {"ambientOffset", c.ambientOffset}};
+}
+
+// Reads one member with nlohmann's checks; any failure becomes a ConfigError naming the field.
+class Reader
+{
+  public:
+    Reader(const json& j, const std::string& file, std::string path)
+        : j_(j), file_(file), path_(std::move(path))
+    {
+        if (!j_.is_object())
+            throw config::ConfigError(file_, path_, "a JSON object");
+    }
+    template <typename T> T get(const char* key) const
+    {
+        const std::string field = path_.empty() ? key : path_ + "." + key;
+        if (!j_.contains(key))
+            throw config::ConfigError(file_, field, "a value", "nothing");
+        try
+        {
+            return j_.at(key).get<T>();
+        }
+        catch (const json::exception&)
+        {
+            throw config::ConfigError(file_, field, "a value of the right type", j_.at(key).dump());
+        }
+    }
+    Reader child(const char* key) const
+    {
+        if (!j_.contains(key))
+            throw config::ConfigError(file_, path_.empty() ? key : path_ + "." + key, "an object", "nothing");
+        return Reader(j_.at(key), file_, path_.empty() ? key : path_ + "." + key);
+    }
+
+  private:
+    const json& j_;
+    const std::string& file_;
+    std::string path_;
+};
+
+physics::StringParameters readString(const Reader& r)
+{
+    physics::StringParameters s;
+    s.name = r.get<std::string>("name");
+    s.tension = r.get<double>("tension");
+    s.massPerLength = r.get<double>("massPerLength");
+    s.length = r.get<double>("length");
+    s.bendingStiffness = r.get<double>("bendingStiffness");
+    s.lossF = r.get<double>("lossF");
+    s.lossB = r.get<double>("lossB");
+    s.lossA = r.get<double>("lossA");
+    s.stoppedLossF = r.get<double>("stoppedLossF");
+    s.torsionalWaveSpeed = r.get<double>("torsionalWaveSpeed");
+    s.torsionalQ = r.get<double>("torsionalQ");
+    s.torsionalImpedance = r.get<double>("torsionalImpedance");
+    s.source = r.get<std::string>("source");
+    return s;
+}
+
+physics::ContactGeometry readGeometry(const Reader& r)
+{
+    physics::ContactGeometry g;
+    g.radius = r.get<double>("radius");
+    g.referenceForce = r.get<double>("referenceForce");
+    g.layerThickness = r.get<double>("layerThickness");
+    g.scaling = r.get<std::string>("scaling") == "hertz" ? physics::ContactScaling::Hertz
+                                                         : physics::ContactScaling::Coulomb;
+    return g;
+}
+
+physics::ContactParameters readContact(const Reader& r)
+{
+    physics::ContactParameters c;
+    c.rig = readGeometry(r.child("rig"));
+    c.calibration = readGeometry(r.child("calibration"));
+    c.material.conductivity = r.get<double>("conductivity");
+    c.material.volumetricHeatCapacity = r.get<double>("volumetricHeatCapacity");
+    c.material.advectionWidthRatio = r.get<double>("advectionWidthRatio");
+    c.ambientOffset = r.get<double>("ambientOffset");
+    return c;
+}
+} // namespace
+
+json specToJson(const ScanSpec& s)
+{
+    const ModelSpec& m = s.model;
+    return {{"format", kFormat},
+            {"kind", kindName(s.kind)},
+            {"preset", m.preset},
+            {"friction", m.friction},
+            {"string", stringJson(m.string)},
+            {"body", m.body},
+            {"contact", contactJson(m.contact)},
+            {"torsion", m.torsion},
+            {"bendingStiffness", m.bendingStiffness},
+            {"fingerDamping", m.fingerDamping},
+            {"sampleRate", s.sampleRate},
+            {"trialSeconds", s.trialSeconds},
+            {"rampSeconds", s.rampSeconds},
+            {"betas", s.betas},
+            {"forces", s.forces},
+            {s.kind == ScanKind::Guettler ? "accelerations" : "bowSpeeds", s.second}};
+}
+
+ScanSpec specFromJson(const json& j, const std::string& file)
+{
+    const Reader r(j, file, "");
+    if (r.get<std::string>("format") != kFormat)
+        throw config::ConfigError(file, "format", std::string("\"") + kFormat + "\"", j.at("format").dump());
+    ScanSpec s;
+    const std::string kind = r.get<std::string>("kind");
+    if (kind != "schelleng" && kind != "guettler")
+        throw config::ConfigError(file, "kind", "\"schelleng\" or \"guettler\"", j.at("kind").dump());
+    s.kind = kind == "schelleng" ? ScanKind::Schelleng : ScanKind::Guettler;
+    s.model.preset = r.get<std::string>("preset");
+    s.model.friction = r.get<std::string>("friction");
+    s.model.string = readString(r.child("string"));
+    s.model.body = r.get<std::string>("body");
+    s.model.contact = readContact(r.child("contact"));
+    s.model.torsion = r.get<bool>("torsion");
+    s.model.bendingStiffness = r.get<bool>("bendingStiffness");
+    s.model.fingerDamping = r.get<bool>("fingerDamping");
+    s.sampleRate = r.get<double>("sampleRate");
+    s.trialSeconds = r.get<double>("trialSeconds");
+    s.rampSeconds = r.get<double>("rampSeconds");
+    s.betas = r.get<std::vector<double>>("betas");
+    s.forces = r.get<std::vector<double>>("forces");
+    s.second = r.get<std::vector<double>>(s.kind == ScanKind::Guettler ? "accelerations" : "bowSpeeds");
+    if (s.betas.empty() || s.forces.empty() || s.second.empty())
+        throw config::ConfigError(
+            file, "betas/forces/" + std::string(s.kind == ScanKind::Guettler ? "accelerations" : "bowSpeeds"),
+            "non-empty arrays of numbers");
+    return s;
+}
+
+std::string specText(const ScanSpec& spec)
+{
+    return specToJson(spec).dump(2) + "\n";
+}
+
+ScanSpec specFromText(const std::string& text, const std::string& file)
+{
+    const json j = json::parse(text, nullptr, false);
+    if (j.is_discarded())
+        throw config::ConfigError(file, "", "a JSON scan specification (" + std::string(kFormat) + ")",
+                                  "text that is not JSON");
+    return specFromJson(j, file);
+}
+
+std::string describeSpecDifference(const std::string& ours, const std::string& theirs)
+{
+    const json a = json::parse(ours, nullptr, false), b = json::parse(theirs, nullptr, false);
+    if (!a.is_object() || !b.is_object())
+        return "the file is not a scan specification";
+    auto shortText = [](const json* v)
+    {
+        std::string text = v != nullptr ? v->dump() : std::string("(absent)");
+        return text.size() > 60 ? text.substr(0, 57) + "..." : text;
+    };
+    std::string text;
+    json keys = a;
+    keys.update(b);
+    for (const auto& [key, unused] : keys.items())
+    {
+        const json* x = a.contains(key) ? &a.at(key) : nullptr;
+        const json* y = b.contains(key) ? &b.at(key) : nullptr;
+        if (x != nullptr && y != nullptr && *x == *y)
+            continue;
+        text += (text.empty() ? "" : "; ") + key + ": " + shortText(x) + " vs " + shortText(y);
+    }
+    return text.empty() ? "formatting only" : text;
+}
+
+} // namespace rosin::scan

@@ -1,0 +1,68 @@
+#pragma once
+// Computes a list of cells on several threads, each with its own CellRunner (one prepared voice per thread).
+// Threads take the next cell from a shared counter, so the split varies from run to run, but every cell is
+// computed independently and deterministically: the rows do not depend on it. Finished rows are handed to
+// the owning thread through take(), which is where they are written, counted and (MPI) sent.
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstddef>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "ScanSpec.h"
+
+namespace rosin::scan
+{
+
+struct FinishedCell
+{
+    std::size_t cell = 0;
+    std::string row; ///< formatted, without newline
+};
+
+class WorkerPool
+{
+  public:
+    /// Starts min(threads, cells) threads (at least one if there are cells). `spec` must outlive the pool.
+    WorkerPool(const ScanSpec& spec, std::vector<std::size_t> cells, unsigned threads);
+    /// Stops taking new cells and waits for the running ones.
+    ~WorkerPool();
+    WorkerPool(const WorkerPool&) = delete;
+    WorkerPool& operator=(const WorkerPool&) = delete;
+
+    /// Rows finished since the last call, waiting up to `wait` for the first. Rethrows a worker's exception.
+    std::vector<FinishedCell> take(std::chrono::milliseconds wait);
+    /// No new cells are started; running ones finish and are still reported.
+    void stop() noexcept { stopping_ = true; }
+    /// Every thread has exited and every row has been taken. Rethrows a worker's exception.
+    bool finished();
+
+  private:
+    void work(const ScanSpec& spec);
+
+    std::vector<std::size_t> cells_;
+    std::atomic<std::size_t> next_{0};
+    std::atomic<bool> stopping_{false};
+    std::mutex mutex_;
+    std::condition_variable ready_;
+    std::vector<FinishedCell> done_;
+    std::exception_ptr error_;
+    std::size_t running_ = 0;
+    std::vector<std::thread> threads_;
+};
+
+/// Takes rows until the pool has finished, on the calling thread: each row goes to `sink`; between waits of
+/// up to `wait`, `idle` runs (progress, MPI polling) and `shouldStop` is asked whether to stop the pool.
+void drainPool(WorkerPool& pool, const std::function<void(const FinishedCell&)>& sink,
+               const std::function<bool()>& shouldStop, const std::function<void()>& idle,
+               std::chrono::milliseconds wait);
+
+/// The default thread count: std::thread::hardware_concurrency(), at least 1.
+unsigned defaultThreadCount() noexcept;
+
+} // namespace rosin::scan

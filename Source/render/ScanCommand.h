@@ -1,0 +1,17 @@
+#pragma once
+// `rosin scan schelleng|guettler|merge`: playability diagrams of one string (seed 001 sections 3.1-3.3),
+// computed on every core, resumable, splittable into shards or over MPI ranks, with the same files whatever
+// the split. The engine is rosin::scan (Source/lab/scan); this file is the command's help and its run.
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rosin::cli
+{
+
+/// The full `rosin scan --help` text.
+std::string scanHelp();
+/// Runs the subcommand with the arguments after "scan" (see Dispatcher.h for the error handling).
+int runScan(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+} // namespace rosin::cli

@@ -1,0 +1,257 @@
+// `rosin scan` through the built binary: help, bad input (clear message, exit status, nothing written), a
+// tiny scan, shards + merge and MPI against a single run (byte for byte), Ctrl-C and resume, missing figure
+// script.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+#include "config/TempFiles.h"
+
+namespace
+{
+namespace fs = std::filesystem;
+
+struct Result
+{
+    int status = -1;
+    std::string out, err;
+};
+
+std::string quote(const std::string& arg)
+{
+    std::string q = "'";
+    for (char c : arg)
+        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+std::string slurp(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+class ScanCli : public ::testing::Test
+{
+  protected:
+    // Runs `PREFIX rosin scan ARGS` in the scratch folder; `prefix` may set variables or wrap the command.
+    Result scan(const std::vector<std::string>& args, const std::string& prefix = "")
+    {
+        std::string command = "cd " + quote(dir.path()) +
+                              " && ROSIN_PRESET_DIR=" + quote(ROSIN_SOURCE_PRESET_DIR) + " " + prefix + " " +
+                              quote(ROSIN_BINARY) + " scan";
+        for (const auto& a : args)
+            command += " " + quote(a);
+        command += " >" + quote(dir.path() + "/stdout.txt") + " 2>" + quote(dir.path() + "/stderr.txt");
+        const int raw = std::system(command.c_str());
+        return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir.path() + "/stdout.txt"),
+                slurp(dir.path() + "/stderr.txt")};
+    }
+    /// Starts the scan in the background and sends SIGINT once its partial file holds a finished cell, so
+    /// the interrupt lands mid-scan however loaded the machine is.
+    Result scanInterruptedMidway(const std::vector<std::string>& args, const std::string& outDir)
+    {
+        std::string run =
+            "ROSIN_PRESET_DIR=" + quote(ROSIN_SOURCE_PRESET_DIR) + " " + quote(ROSIN_BINARY) + " scan";
+        for (const auto& a : args)
+            run += " " + quote(a);
+        const std::string partial = quote(dir.path() + "/" + outDir + "/scan.partial.csv");
+        const std::string script = "cd " + quote(dir.path()) + " && { " + run + " >" +
+                                   quote(dir.path() + "/stdout.txt") + " 2>" +
+                                   quote(dir.path() + "/stderr.txt") +
+                                   " & pid=$!; while kill -0 $pid 2>/dev/null && [ \"$(cat " + partial +
+                                   " 2>/dev/null | wc -l)\" -lt 2 ]; do sleep 0.01; done; kill -INT $pid "
+                                   "2>/dev/null; wait $pid; }";
+        const int raw = std::system(("bash -c " + quote(script)).c_str());
+        return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir.path() + "/stdout.txt"),
+                slurp(dir.path() + "/stderr.txt")};
+    }
+    std::string path(const std::string& name) const { return dir.path() + "/" + name; }
+    bool sameFiles(const std::string& a, const std::string& b) const
+    {
+        for (const char* f : {"/scan.csv", "/scan.json"})
+            if (slurp(path(a) + f) != slurp(path(b) + f) || slurp(path(a) + f).empty())
+                return false;
+        return true;
+    }
+
+    rosin::test::TempDir dir;
+};
+
+// A tiny Guettler scan: one beta, 3 x 3 cells of 0.1 s.
+std::vector<std::string> tiny(const std::string& out, std::vector<std::string> more = {})
+{
+    std::vector<std::string> args = {"guettler", "--grid",       "3",     "--beta", "0.0899", "--duration",
+                                     "0.1",      "--no-figures", "--out", out};
+    args.insert(args.end(), more.begin(), more.end());
+    return args;
+}
+} // namespace
+
+TEST_F(ScanCli, HelpDocumentsTheOptions)
+{
+    const Result r = scan({"--help"});
+    EXPECT_EQ(r.status, 0);
+    for (const char* text : {"--preset",
+                             "--friction",
+                             "--beta",
+                             "--grid",
+                             "--force-range",
+                             "--acceleration-range",
+                             "--bow-speed",
+                             "--beta-range",
+                             "--duration",
+                             "--sample-rate",
+                             "--threads",
+                             "--shard",
+                             "--mpi",
+                             "--out",
+                             "--no-figures",
+                             "--layer-thickness",
+                             "--contact-radius",
+                             "--contact coulomb|hertz",
+                             "--finger-damping",
+                             "--rigid-bridge",
+                             "--no-torsion",
+                             "--no-stiffness",
+                             "rosin scan merge DIR",
+                             "scan.partial.csv"})
+        EXPECT_NE(r.out.find(text), std::string::npos) << text;
+}
+
+TEST_F(ScanCli, BadValuesNameTheOptionAndWriteNothing)
+{
+    struct Case
+    {
+        std::vector<std::string> more;
+        const char* message;
+    };
+    for (const Case& c : {Case{{"--grid", "301"}, "--grid: expected N or NxM"},
+                          Case{{"--grid", "20x400"}, "but got \"20x400\""},
+                          Case{{"--friction", "plasticc"}, "--friction: expected one of classical"},
+                          Case{{"--beta", "0.9"}, "--beta: expected comma-separated betas"},
+                          Case{{"--force-range", "3:1"}, "--force-range: expected FIRST:LAST"},
+                          Case{{"--acceleration-range", "0.1"}, "--acceleration-range: expected FIRST:LAST"},
+                          Case{{"--shard", "2/2"}, "--shard: expected K/N"},
+                          Case{{"--threads", "0"}, "--threads: expected an integer in 1..4096"},
+                          Case{{"--duration", "-1"}, "--duration: expected a number > 0"},
+                          Case{{"--sample-rate", "44100.5"}, "--sample-rate"},
+                          Case{{"--contact", "elastic"}, "--contact: expected one of coulomb, hertz"},
+                          Case{{"--preset", "no-such-preset"}, "no-such-preset"}})
+    {
+        const Result r = scan(tiny("never", c.more));
+        EXPECT_EQ(r.status, 1) << c.message;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(path("never"))) << c.message;
+    }
+}
+
+TEST_F(ScanCli, UsageErrorsExitWithTwo)
+{
+    EXPECT_EQ(scan({}).status, 2);
+    EXPECT_EQ(scan({"schellen", "--out", "x"}).status, 2);
+    EXPECT_EQ(scan({"guettler", "--grid", "3"}).status, 2); // no --out
+    EXPECT_EQ(scan(tiny("x", {"--bogus"})).status, 2);
+    const Result wrongKind = scan(tiny("x", {"--bow-speed", "0.1"}));
+    EXPECT_EQ(wrongKind.status, 2);
+    EXPECT_NE(wrongKind.err.find("--bow-speed applies to schelleng scans only"), std::string::npos);
+    EXPECT_EQ(scan(tiny("x", {"--shard", "0/2", "--mpi"})).status, 2);
+    EXPECT_EQ(scan({"merge"}).status, 2);
+    EXPECT_FALSE(fs::exists(path("x")));
+    fs::create_directories(path("empty"));
+    const Result merge = scan({"merge", path("empty")});
+    EXPECT_EQ(merge.status, 1);
+    EXPECT_NE(merge.err.find("no shard files"), std::string::npos) << merge.err;
+}
+
+TEST_F(ScanCli, TinyScanWritesCsvAndJson)
+{
+    const Result r = scan(tiny("tiny"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string csv = slurp(path("tiny/scan.csv"));
+    EXPECT_EQ(csv.rfind("cell,beta,bowForce,acceleration,regime,transientPeriods,muStatic,jump,firstSlipTime,"
+                        "slipsPerPeriod,pitchCents,failure\n0,0.0899,0.4,0.08,",
+                        0),
+              0u)
+        << csv;
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 10);
+    const std::string json = slurp(path("tiny/scan.json"));
+    for (const char* key : {"\"format\": \"rosin-scan/1\"", "\"kind\": \"guettler\"", "\"helmholtzFraction\"",
+                            "\"reachedFraction\"", "\"guettlerWedge\""})
+        EXPECT_NE(json.find(key), std::string::npos) << key;
+    EXPECT_TRUE(fs::exists(path("tiny/scan.spec.json")));
+    EXPECT_FALSE(fs::exists(path("tiny/scan.partial.csv")));
+    EXPECT_NE(r.err.find("scan: 9/9 cells"), std::string::npos) << r.err;
+}
+
+TEST_F(ScanCli, ShardsMergedEqualASingleRun)
+{
+    ASSERT_EQ(scan(tiny("single")).status, 0);
+    ASSERT_EQ(scan(tiny("sharded", {"--shard", "0/2"})).status, 0);
+    const Result early = scan({"merge", path("sharded"), "--no-figures"});
+    EXPECT_EQ(early.status, 1);
+    EXPECT_NE(early.err.find("missing shard(s) 1 of 2"), std::string::npos) << early.err;
+    ASSERT_EQ(scan(tiny("sharded", {"--shard", "1/2"})).status, 0);
+    ASSERT_EQ(scan({"merge", path("sharded"), "--no-figures"}).status, 0);
+    EXPECT_TRUE(sameFiles("single", "sharded"));
+}
+
+TEST_F(ScanCli, MpiRunEqualsASingleRun)
+{
+#if defined(ROSIN_TEST_MPIEXEC)
+    ASSERT_EQ(scan(tiny("single")).status, 0);
+    const Result r = scan(tiny("mpi", {"--mpi", "--threads", "1"}),
+                          std::string(ROSIN_TEST_MPIEXEC) + " --allow-run-as-root --oversubscribe -np 2");
+    ASSERT_EQ(r.status, 0) << r.out << r.err;
+    EXPECT_TRUE(sameFiles("single", "mpi"));
+#else
+    GTEST_SKIP() << "rosin was built without MPI, or mpirun was not found";
+#endif
+}
+
+// Ctrl-C (SIGINT from timeout(1)) stops the scan with the finished rows kept; the same command resumes and
+// gives the files of an uninterrupted run.
+TEST_F(ScanCli, InterruptedScanResumes)
+{
+    const std::vector<std::string> args = {"guettler", "--friction",   "classical", "--beta",
+                                           "0.0899",   "--grid",       "10",        "--threads",
+                                           "1",        "--no-figures", "--out"};
+    auto with = [&](const std::string& out)
+    {
+        auto a = args;
+        a.push_back(out);
+        return a;
+    };
+    const Result stopped = scanInterruptedMidway(with("resumed"), "resumed");
+    if (stopped.status == 0)
+        GTEST_SKIP() << "the scan finished before the interrupt";
+    EXPECT_EQ(stopped.status, 130) << stopped.err;
+    EXPECT_NE(stopped.out.find("run the same command again to resume"), std::string::npos) << stopped.out;
+    EXPECT_TRUE(fs::exists(path("resumed/scan.partial.csv")));
+    const Result resumed = scan(with("resumed"));
+    ASSERT_EQ(resumed.status, 0) << resumed.err;
+    EXPECT_NE(resumed.out.find("resuming: "), std::string::npos) << resumed.out;
+    ASSERT_EQ(scan(with("single")).status, 0);
+    EXPECT_TRUE(sameFiles("single", "resumed"));
+    EXPECT_FALSE(fs::exists(path("resumed/scan.partial.csv")));
+}
+
+TEST_F(ScanCli, MissingFigureScriptIsAWarning)
+{
+    auto args = tiny("figures");
+    args.erase(std::find(args.begin(), args.end(), "--no-figures"));
+    const Result r = scan(args, "ROSIN_FIGURE_SCRIPT=/nonexistent/plot_scan.py");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_NE(
+        r.err.find("warning: figures not drawn: the figure script /nonexistent/plot_scan.py is missing"),
+        std::string::npos)
+        << r.err;
+    EXPECT_FALSE(slurp(path("figures/scan.csv")).empty());
+    EXPECT_FALSE(slurp(path("figures/scan.json")).empty());
+}

@@ -1,0 +1,192 @@
+// The run machinery: the same files whether a scan is computed on one thread or several, interrupted and
+// resumed, or split into shards and merged; a partial file of another scan is refused.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <filesystem>
+
+#include "SmallScan.h"
+#include "config/TempFiles.h"
+#include "lab/scan/CellRunner.h"
+#include "lab/scan/CsvRow.h"
+#include "lab/scan/Merge.h"
+#include "lab/scan/ScanError.h"
+
+using namespace rosin::scan;
+namespace fs = std::filesystem;
+
+namespace
+{
+std::string file(const std::string& dir, const char* name)
+{
+    return readTextFile(fs::path(dir) / name);
+}
+
+// The three files of a complete scan, for byte comparisons.
+struct Outputs
+{
+    std::string csv, json, spec;
+    bool operator==(const Outputs&) const = default;
+};
+
+Outputs outputs(const std::string& dir)
+{
+    return {file(dir, "scan.csv"), file(dir, "scan.json"), file(dir, "scan.spec.json")};
+}
+
+Outputs reference(const rosin::test::TempDir& tmp)
+{
+    const std::string dir = tmp.path() + "/single";
+    EXPECT_TRUE(test::run(test::smallSpec(), dir, test::quietOptions(1)).complete);
+    return outputs(dir);
+}
+} // namespace
+
+TEST(ScanRun, ThreadCountDoesNotChangeTheFiles)
+{
+    rosin::test::TempDir tmp;
+    const Outputs one = reference(tmp);
+    const std::string dir = tmp.path() + "/threads";
+    const RunReport r = test::run(test::smallSpec(), dir, test::quietOptions(3));
+    EXPECT_TRUE(r.complete);
+    EXPECT_EQ(r.computed, 24u);
+    EXPECT_TRUE(outputs(dir) == one);
+    EXPECT_FALSE(fs::exists(dir + "/scan.partial.csv"));
+    EXPECT_NE(one.csv.find(csvHeader(ScanKind::Guettler) + "\n0,0.0899,0.6,0.5,"), std::string::npos);
+}
+
+// A reused runner (reset between cells) gives the same row as a fresh one, whatever ran before.
+TEST(ScanRun, CellsDoNotDependOnWhatTheRunnerComputedBefore)
+{
+    ScanSpec spec = test::smallSpec();
+    spec.model.friction = "plastic"; // the thermal law has the most state to reset
+    CellRunner fresh(spec), used(spec);
+    used.run(23);
+    used.run(5);
+    EXPECT_EQ(formatRow(used.run(14)), formatRow(fresh.run(14)));
+}
+
+TEST(ScanRun, InterruptedRunResumesToTheSameFiles)
+{
+    rosin::test::TempDir tmp;
+    const Outputs one = reference(tmp);
+    const std::string dir = tmp.path() + "/resumed";
+    std::atomic<int> polls{0};
+    RunOptions stopping = test::quietOptions(2);
+    stopping.shouldStop = [&] { return ++polls > 0; }; // "Ctrl-C" at the first poll
+    const RunReport first = test::run(test::smallSpec(), dir, stopping);
+    EXPECT_FALSE(first.complete);
+    EXPECT_GT(first.computed, 0u);
+    EXPECT_LT(first.computed, 24u);
+    EXPECT_TRUE(fs::exists(dir + "/scan.partial.csv"));
+    EXPECT_FALSE(fs::exists(dir + "/scan.csv"));
+
+    const RunReport second = test::run(test::smallSpec(), dir, test::quietOptions(2));
+    EXPECT_TRUE(second.complete);
+    EXPECT_EQ(second.resumed, first.computed);
+    EXPECT_EQ(second.resumed + second.computed, 24u);
+    EXPECT_TRUE(outputs(dir) == one);
+    EXPECT_FALSE(fs::exists(dir + "/scan.partial.csv"));
+    std::printf("[figure] resume: %zu cells before the stop, %zu after; files identical to a single run\n",
+                first.computed, second.computed);
+}
+
+TEST(ScanRun, TornLastLineIsComputedAgain)
+{
+    rosin::test::TempDir tmp;
+    const Outputs one = reference(tmp);
+    const std::string dir = tmp.path() + "/torn";
+    fs::create_directories(dir);
+    const std::string csv = one.csv;
+    const std::size_t third = csv.find('\n', csv.find('\n', csv.find('\n') + 1) + 1);
+    // The header, two rows and half of the third, as a killed process can leave it.
+    writeFileAtomically(dir + "/scan.partial.csv", csv.substr(0, third + 10));
+    writeFileAtomically(dir + "/scan.spec.json", one.spec);
+    const RunReport r = test::run(test::smallSpec(), dir, test::quietOptions(2));
+    EXPECT_EQ(r.resumed, 2u);
+    EXPECT_TRUE(outputs(dir) == one);
+}
+
+TEST(ScanRun, PartialFileOfAnotherSpecificationIsRefused)
+{
+    rosin::test::TempDir tmp;
+    const std::string dir = tmp.path() + "/other";
+    RunOptions stopping = test::quietOptions(1);
+    stopping.shouldStop = [] { return true; };
+    test::run(test::smallSpec(), dir, stopping);
+    ASSERT_TRUE(fs::exists(dir + "/scan.partial.csv"));
+    ScanSpec changed = test::smallSpec();
+    changed.model.friction = "reconstructed";
+    try
+    {
+        test::run(changed, dir, test::quietOptions(1));
+        FAIL() << "a partial file of another scan was accepted";
+    }
+    catch (const ScanError& e)
+    {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("scan.partial.csv belongs to a different scan specification"),
+                  std::string::npos)
+            << message;
+        EXPECT_NE(message.find("friction: \"reconstructed\" vs \"classical\""), std::string::npos) << message;
+    }
+    EXPECT_FALSE(fs::exists(dir + "/scan.csv"));
+}
+
+TEST(ScanRun, ShardsMergedEqualASingleRun)
+{
+    rosin::test::TempDir tmp;
+    const Outputs one = reference(tmp);
+    const std::string dir = tmp.path() + "/shards";
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+        RunOptions o = test::quietOptions(1);
+        o.shard = ShardId{k, 3};
+        const RunReport r = test::run(test::smallSpec(), dir, o);
+        EXPECT_TRUE(r.complete);
+        EXPECT_EQ(r.total, 8u);
+        EXPECT_TRUE(fs::exists(dir + "/scan.shard-" + std::to_string(k) + "-of-3.csv"));
+    }
+    EXPECT_FALSE(fs::exists(dir + "/scan.csv"));
+    std::ostringstream out, err;
+    mergeShards(dir, OutputOptions{false}, out, err);
+    EXPECT_TRUE(outputs(dir) == one);
+}
+
+TEST(ScanRun, MergeNamesMissingShardsAndRefusesMixedSpecifications)
+{
+    rosin::test::TempDir tmp;
+    const std::string dir = tmp.path() + "/missing";
+    RunOptions o = test::quietOptions(1);
+    o.shard = ShardId{1, 3};
+    test::run(test::smallSpec(), dir, o);
+    std::ostringstream out, err;
+    try
+    {
+        mergeShards(dir, OutputOptions{false}, out, err);
+        FAIL() << "merged with shards missing";
+    }
+    catch (const ScanError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("missing shard(s) 0, 2 of 3"), std::string::npos) << e.what();
+    }
+    ScanSpec other = test::smallSpec();
+    other.trialSeconds = 0.05;
+    for (std::size_t k : {0u, 2u})
+    {
+        o.shard = ShardId{k, 3};
+        test::run(k == 2 ? other : test::smallSpec(), dir, o);
+    }
+    try
+    {
+        mergeShards(dir, OutputOptions{false}, out, err);
+        FAIL() << "merged shards of two specifications";
+    }
+    catch (const ScanError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("shard 2/3 was computed for a different scan specification"),
+                  std::string::npos)
+            << e.what();
+    }
+    EXPECT_FALSE(fs::exists(dir + "/scan.csv"));
+}

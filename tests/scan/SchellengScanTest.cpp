@@ -1,0 +1,85 @@
+// Physics check (a): a Schelleng scan of the classical friction curve (seed 001 Fig. 3b: the cello D3 of the
+// Galluzzo rig on the cello body, default 20 x 20 grid, 0.05 m/s, 1 s trials) against Schelleng's theory
+// (reference 6.1-6.2): the Helmholtz region's upper edge F_max = 2 Z0 v_b / (beta (mu_s - mu_d)) has slope -1
+// on log-log axes, the lower edge F_min ~ 1/beta^2 slope -2.
+//
+// Found (see the [figure] lines): the upper edge follows -1 and lies within a factor 2 of the theory; the
+// lower edge does not follow -2 (about -0.8). It is not Raman's body-resistance limit: F_min from the body
+// (reference eq. 6.5, d ~ 2e-4 N) is below the grid for beta > 0.05, the same lower edge appears with a rigid
+// bridge, and longer trials (2 s) or a start inside Guettler's wedge do not change it. Between beta 0.036 and
+// 0.09 the edge scales about as beta^-1.5; above, the bottom of the diagram is a bistable mix of Helmholtz
+// and double slipping. The -2 expectation is kept as a disabled test.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "config/TempFiles.h"
+#include "lab/scan/RunFiles.h"
+#include "lab/scan/ScanRun.h"
+
+using namespace rosin::scan;
+
+namespace
+{
+class SchellengScan : public ::testing::Test
+{
+  protected:
+    static void SetUpTestSuite()
+    {
+        ScanSpec spec = defaultSpec(ScanKind::Schelleng);
+        spec.model.friction = "classical";
+        RunOptions o;
+        o.output.figures = false;
+        o.progress = false;
+        std::ostringstream out, err;
+        const RunReport r = runScan(spec, dir_->path(), o, out, err);
+        ASSERT_TRUE(r.complete);
+        summary_ = nlohmann::json::parse(readTextFile(dir_->path() + "/scan.json"));
+    }
+    static void TearDownTestSuite() { delete dir_; }
+
+    // The fitted edge's force at beta, N.
+    static double fitted(const char* edge, double beta)
+    {
+        const auto& b = summary_["boundaries"][edge];
+        return std::pow(10.0, b["intercept"].get<double>() + b["slope"].get<double>() * std::log10(beta));
+    }
+
+    static inline rosin::test::TempDir* dir_ = new rosin::test::TempDir;
+    static inline nlohmann::json summary_;
+};
+} // namespace
+
+TEST_F(SchellengScan, UpperBoundaryFollowsSchellengsMaximumForce)
+{
+    const auto& upper = summary_["boundaries"]["upper"];
+    const auto& lower = summary_["boundaries"]["lower"];
+    ASSERT_TRUE(upper.is_object());
+    ASSERT_TRUE(lower.is_object());
+    const double c = summary_["theory"]["fmaxCoefficient"].get<double>();
+    const double betaMid = std::sqrt(0.02 * 0.18); // the grid's middle on a log axis
+    const double ratio = fitted("upper", betaMid) / (c / betaMid);
+    EXPECT_NEAR(upper["slope"].get<double>(), -1.0, 0.35);
+    EXPECT_GT(ratio, 0.5);
+    EXPECT_LT(ratio, 2.0);
+    std::printf(
+        "[figure] Schelleng scan, classical, cello D3 + body, 20x20, 1 s: Helmholtz %.1f %% of cells; "
+        "upper edge slope %.3f (%d columns), at beta %.3f %.3f N = %.2f x theory 2 Z0 v_b/(beta dmu) "
+        "%.3f N; lower edge slope %.3f (%d columns, expected -2: not reproduced), at beta %.3f %.3f N vs "
+        "theory d/beta^2 %.3f N\n",
+        100.0 * summary_["helmholtzFraction"].get<double>(), upper["slope"].get<double>(),
+        upper["points"].get<int>(), betaMid, fitted("upper", betaMid), ratio, c / betaMid,
+        lower["slope"].get<double>(), lower["points"].get<int>(), betaMid, fitted("lower", betaMid),
+        summary_["theory"]["fminCoefficient"].get<double>() / (betaMid * betaMid));
+}
+
+// Schelleng's -2 for the lower edge: not what this model gives (see the top of the file). Run with
+// --gtest_also_run_disabled_tests.
+TEST_F(SchellengScan, DISABLED_LowerBoundaryFollowsMinusTwo)
+{
+    EXPECT_NEAR(summary_["boundaries"]["lower"]["slope"].get<double>(), -2.0, 0.35);
+}
