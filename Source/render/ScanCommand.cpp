@@ -1,6 +1,7 @@
 #include "ScanCommand.h"
 
 #include "CommandLine.h"
+#include "ScanCompareCommand.h"
 #include "ScanOptions.h"
 #include "lab/scan/Merge.h"
 #include "lab/scan/ScanRun.h"
@@ -58,6 +59,7 @@ std::string scanHelp()
     return R"(usage: rosin scan schelleng [options] --out DIR
        rosin scan guettler  [options] --out DIR
        rosin scan merge DIR [--no-figures]
+       rosin scan compare A B --out DIR     the difference of two scans (DIR/compare.png)
 
 Playability diagrams of one bowed string (seed 001 sections 3.1-3.3), one simulated trial per grid cell:
   schelleng  steady bowing at one speed over (beta, force), both log-spaced; the regime at the end of each
@@ -121,6 +123,8 @@ exit status: 0 success, 1 bad value, preset or folder, 2 usage error, 128+signal
 
 int runScan(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
 {
+    if (!args.empty() && args[0] == "compare")
+        return runScanCompare({args.begin() + 1, args.end()}, out, err);
     const ScanCommandLine c = parseScanCommandLine(args);
     if (c.action == ScanCommandLine::Action::Help)
     {

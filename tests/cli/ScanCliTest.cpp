@@ -255,3 +255,19 @@ TEST_F(ScanCli, MissingFigureScriptIsAWarning)
     EXPECT_FALSE(slurp(path("figures/scan.csv")).empty());
     EXPECT_FALSE(slurp(path("figures/scan.json")).empty());
 }
+
+TEST_F(ScanCli, CompareDrawsTheDifferenceOfTwoScans)
+{
+    ASSERT_EQ(scan(tiny("a", {"--friction", "classical"})).status, 0);
+    ASSERT_EQ(scan(tiny("b", {"--friction", "plastic"})).status, 0);
+    const Result r = scan({"compare", "a", "b", "--out", "diff"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("Helmholtz cells:"), std::string::npos) << r.out;
+    // PNG signature: the figure script ran and wrote a real image.
+    EXPECT_EQ(slurp(path("diff/compare.png")).substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+    const Result missing = scan({"compare", "a", "nowhere", "--out", "diff2"});
+    EXPECT_EQ(missing.status, 1);
+    EXPECT_NE(missing.err.find("nowhere/scan.csv: expected a finished scan"), std::string::npos)
+        << missing.err;
+    EXPECT_EQ(scan({"compare", "a", "--out", "diff3"}).status, 2);
+}

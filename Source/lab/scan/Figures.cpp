@@ -33,30 +33,40 @@ std::string figureScriptPath()
     return overridden != nullptr && *overridden != '\0' ? overridden : ROSIN_FIGURE_SCRIPT;
 }
 
-bool drawFigures(const std::filesystem::path& dir, std::ostream& err)
+bool runFigureScript(const std::vector<std::string>& arguments, std::ostream& err,
+                     const std::string& consequence)
 {
     const std::string script = figureScriptPath();
-    const char* keep = "; scan.csv and scan.json are complete (use --no-figures to skip figures)\n";
     std::error_code ec;
     if (script.empty() || !std::filesystem::is_regular_file(script, ec))
     {
         err << "warning: figures not drawn: the figure script "
-            << (script.empty() ? "(none built in)" : script) << " is missing" << keep;
+            << (script.empty() ? "(none built in)" : script) << " is missing" << consequence;
         return false;
     }
     if (shellStatus("command -v python3 >/dev/null 2>&1") != 0)
     {
-        err << "warning: figures not drawn: python3 is not installed (with matplotlib and numpy)" << keep;
+        err << "warning: figures not drawn: python3 is not installed (with matplotlib and numpy)"
+            << consequence;
         return false;
     }
-    const int status = shellStatus("python3 " + quoted(script) + " " + quoted(dir.string()));
+    std::string command = "python3 " + quoted(script), shown = "python3 " + script;
+    for (const auto& a : arguments)
+        command += " " + quoted(a), shown += " " + a;
+    const int status = shellStatus(command);
     if (status != 0)
     {
-        err << "warning: figures not drawn: python3 " << script << " " << dir.string()
-            << " exited with status " << status << " (are matplotlib and numpy installed?)" << keep;
+        err << "warning: figures not drawn: " << shown << " exited with status " << status
+            << " (are matplotlib and numpy installed?)" << consequence;
         return false;
     }
     return true;
+}
+
+bool drawFigures(const std::filesystem::path& dir, std::ostream& err)
+{
+    return runFigureScript({dir.string()}, err,
+                           "; scan.csv and scan.json are complete (use --no-figures to skip figures)\n");
 }
 
 } // namespace rosin::scan

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace rosin::scan
 {
@@ -13,5 +14,9 @@ namespace rosin::scan
 std::string figureScriptPath();
 /// Runs the script on `dir`. Returns true if it succeeded; otherwise writes a warning to `err`.
 bool drawFigures(const std::filesystem::path& dir, std::ostream& err);
+/// Runs `python3 SCRIPT arguments...` (the script's other modes: compare, loop). Returns true if it
+/// succeeded; otherwise writes a warning naming what is missing to `err`, ending with `consequence`.
+bool runFigureScript(const std::vector<std::string>& arguments, std::ostream& err,
+                     const std::string& consequence);
 
 } // namespace rosin::scan

@@ -1,0 +1,15 @@
+#pragma once
+// `rosin scan compare A B --out DIR`: the difference of two finished scans of the same kind and grid, as a
+// figure in the style of seed 001 Figs. 9-11 (what a model variation changes), drawn by the lab's figure
+// script, and the Helmholtz share of each printed.
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rosin::cli
+{
+
+/// args after "compare". Returns the exit status; throws UsageError / scan::ScanError on bad input.
+int runScanCompare(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+} // namespace rosin::cli
