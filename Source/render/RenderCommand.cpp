@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "CommandLine.h"
+#include "LoopOutput.h"
 #include "OfflineRender.h"
 #include "ProbeChannels.h"
 #include "WavWriter.h"
@@ -40,16 +41,17 @@ struct RenderOptions
     std::optional<std::string> probe, preset, friction, body;
     double sampleRate = kDefaultSampleRate;
     std::optional<double> scale;
+    std::optional<LoopRequest> loop;
     bool help = false;
 };
 
 RenderOptions parseRenderOptions(const std::vector<std::string>& args)
 {
     RenderOptions o;
-    const auto options = parseOptions(
-        args,
-        {"--gesture", "--out", "--probe", "--preset", "--friction", "--body", "--sample-rate", "--scale"},
-        {"--help", "-h"});
+    const auto options = parseOptions(args,
+                                      {"--gesture", "--out", "--probe", "--preset", "--friction", "--body",
+                                       "--sample-rate", "--scale", "--loop", "--loop-interval"},
+                                      {"--help", "-h"});
     for (const Option& opt : options)
     {
         const std::string& v = opt.value.value_or("");
@@ -74,6 +76,10 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args)
             if (!kSampleRate.contains(o.sampleRate) || o.sampleRate != std::floor(o.sampleRate))
                 throw config::ConfigError(opt.name, "", "an integer in 8000..384000 (Hz)", "\"" + v + "\"");
         }
+        else if (opt.name == "--loop")
+            (o.loop ? *o.loop : o.loop.emplace()).figure = v;
+        else if (opt.name == "--loop-interval")
+            parseLoopInterval(v, o.loop ? *o.loop : o.loop.emplace());
         else if (opt.name == "--scale")
         {
             o.scale = parseNumber(opt.name, v);
@@ -81,6 +87,8 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args)
                 throw config::ConfigError(opt.name, "", kScale.describe(), "\"" + v + "\"");
         }
     }
+    if (o.loop && o.loop->figure.empty())
+        throw config::ConfigError("--loop", "", "a figure file name (FILE.png) with --loop-interval", "none");
     for (const std::string* path : {&o.out, o.probe ? &*o.probe : nullptr})
         if (path != nullptr && path->empty())
             throw config::ConfigError("--out/--probe", "", "a file name", "an empty string");
@@ -186,7 +194,7 @@ std::string renderHelp()
     }
     return "usage: rosin render [--gesture SPEC|FILE.json] [--out FILE.wav] [--probe FILE.wav]\n"
            "                    [--preset NAME|FILE.json] [--friction LAW] [--body BODY]\n"
-           "                    [--sample-rate HZ] [--scale S]\n"
+           "                    [--sample-rate HZ] [--scale S] [--loop FILE.png [--loop-interval A:B]]\n"
            "\n"
            "Drives one bowed-string voice with a bow gesture and writes the force of the string on the "
            "bridge.\n"
@@ -224,6 +232,10 @@ std::string renderHelp()
            "                           viscous, modified-bow, modified-rod\n"
            "  --body BODY              replace the preset's body: cello, violin, rigid\n"
            "  --sample-rate HZ         integer, 8000..384000 (default 48000)\n"
+           "  --loop FILE.png          also draw the friction/velocity hysteresis loop (seed 001 Figs. "
+           "20-21)\n"
+           "                           and keep its samples in FILE.csv\n"
+           "  --loop-interval A:B      the loop's interval in seconds (default: the last 0.05 s)\n"
            "  -h, --help               this text\n"
            "\n"
            "valid ranges: beta 0.01..0.5, force 0..20 N, speed -5..5 m/s, acceleration -50..50 m/s^2,\n"
@@ -264,6 +276,10 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
     gesture::BowGesture bow;
     bow.prepare(script, start, o.sampleRate);
 
+    std::optional<lab::HysteresisLoop> loop;
+    if (o.loop)
+        loop.emplace(makeLoop(*o.loop, script.totalSeconds(), o.sampleRate));
+
     physics::BowedStringVoice voice;
     voice.prepare(setup.voice, physics::makeFrictionLaw(setup.friction, setup.contact), o.sampleRate);
 
@@ -288,6 +304,8 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
                       {
                           for (int i = 0; i < n; ++i)
                               bridge.push_back(static_cast<float>(s[i].bridgeForce));
+                          for (int i = 0; loop && i < n; ++i)
+                              loop->add(s[i]);
                           if (!probeFile)
                               return;
                           for (auto& channel : probeBlock)
@@ -333,6 +351,8 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
         for (std::size_t i = 0; i < kProbeChannels.size(); ++i)
             out << "  " << i + 1 << " " << kProbeChannels[i].name << " [" << kProbeChannels[i].unit << "]\n";
     }
+    if (loop)
+        writeLoop(*loop, *o.loop, preset.name + " / " + preset.friction + " / " + o.gesture, out, err);
     if (stats.runawayRecoveries > 0 || stats.nonFiniteSamples > 0)
         err << "warning: the voice recovered from a runaway state " << stats.runawayRecoveries << " time(s); "
             << stats.nonFiniteSamples << " non-finite sample(s) written as 0\n";
