@@ -21,6 +21,9 @@ class CellRunner
     CellRunner& operator=(const CellRunner&) = delete;
 
     CellResult run(std::size_t cell);
+    /// The per-sample output of the last run (analyses beyond the scan's row, e.g. tests).
+    const std::vector<physics::VoiceSample>& lastSamples() const noexcept { return samples_; }
+    double periodSamples() const noexcept { return periodSamples_; }
 
   private:
     const ScanSpec& spec_;
