@@ -6,6 +6,7 @@
 #include "CommandLine.h"
 #include "RenderCommand.h"
 #include "ScanCommand.h"
+#include "SynthDataCommand.h"
 
 #ifndef ROSIN_VERSION
 #define ROSIN_VERSION "unknown"
@@ -24,12 +25,15 @@ struct Command
     std::string (*help)();
 };
 
-// One entry (and one file) per subcommand; later: discover, synth-data.
+// One entry (and one file) per subcommand; later: discover.
 const Command kCommands[] = {
     {"render", "render a bow gesture to a WAV of the bridge force (and a probe of internal channels)",
      runRender, renderHelp},
     {"scan", "Schelleng and Guettler playability diagrams over a grid of bowings (all cores, resumable)",
      runScan, scanHelp},
+    {"synth-data",
+     "a measured-like dataset from the model with physical effects hidden (discovery test data)",
+     runSynthData, synthDataHelp},
 };
 
 const Command* findCommand(const std::string& name)

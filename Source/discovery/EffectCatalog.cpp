@@ -1,0 +1,202 @@
+#include "EffectCatalog.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "gesture/GestureLimits.h"
+
+namespace rosin::discovery
+{
+
+namespace
+{
+// --- what each effect changes (the header says why) ----------------------------------------------------
+void junctionGrowth(SimulationModel& m, const std::vector<double>& v)
+{
+    m.frictionEffects.junctionGrowth = v[0];
+    m.frictionEffects.junctionGrowthTime = v[1];
+}
+
+void breakawayJump(SimulationModel& m, const std::vector<double>& v)
+{
+    m.preset.friction = v[0] == 0.0 ? "modified-rod" : "modified-bow";
+}
+
+void hertzContact(SimulationModel& m, const std::vector<double>&)
+{
+    m.preset.contactOverrides.scaling = physics::ContactScaling::Hertz;
+}
+
+void stickingCreep(SimulationModel& m, const std::vector<double>& v)
+{
+    m.frictionEffects.creepResistance = v[0];
+}
+
+// Multiplies, so the effect adds to whatever loss the baseline already has.
+void extraStringDamping(SimulationModel& m, const std::vector<double>& v)
+{
+    m.lossScale *= v[0];
+}
+
+// Adds, for the same reason: the offset is relative to the rig's stated ambient.
+void ambientTemperature(SimulationModel& m, const std::vector<double>& v)
+{
+    m.preset.ambientOffset += v[0];
+}
+
+std::vector<Effect> makeCatalog()
+{
+    // Fit ranges (min..max) are wide: a gap may call for more than synth-data hides. Draw ranges are issue
+    // 5's "realistic" values, strong enough to be seen through the measurement chain.
+    const EffectParameter growth{.name = "growth",
+                                 .min = 0.0,
+                                 .max = 1.0,
+                                 .drawMin = 0.1,
+                                 .drawMax = 0.3,
+                                 .meaning = "fractional static-limit gain per e-fold of hold time"};
+    const EffectParameter onsetTime{.name = "onsetTime",
+                                    .unit = "s",
+                                    .min = 5e-4,
+                                    .max = 0.05,
+                                    .drawMin = 0.002,
+                                    .drawMax = 0.010,
+                                    .logarithmic = true,
+                                    .meaning = "hold time at which ageing sets in"};
+    const EffectParameter jumpCurve{.name = "jumpCurve",
+                                    .min = 0.0,
+                                    .max = 1.0,
+                                    .drawMin = 0.0,
+                                    .drawMax = 1.0,
+                                    .choices = {"rod", "bow"},
+                                    .meaning =
+                                        "the jump curve h(v): rosin-coated rod (eq. 13) or bow (eq. 12)"};
+    const EffectParameter creepResistance{.name = "creepResistance",
+                                          .unit = "N s/m",
+                                          .min = 5.0,
+                                          .max = 2000.0,
+                                          .drawMin = 40.0,
+                                          .drawMax = 150.0,
+                                          .logarithmic = true,
+                                          .meaning = "dashpot in series with the sticking contact"};
+    const EffectParameter lossScale{.name = "lossScale",
+                                    .min = 1.0,
+                                    .max = 10.0,
+                                    .drawMin = 2.0,
+                                    .drawMax = 4.0,
+                                    .logarithmic = true,
+                                    .meaning = "every transverse mode's loss factor x this"};
+    const EffectParameter ambientOffset{.name = "ambientOffset",
+                                        .unit = "K",
+                                        .min = -25.0,
+                                        .max = 25.0,
+                                        .drawMin = 8.0,
+                                        .drawMax = 15.0,
+                                        .signedDraw = true,
+                                        .meaning = "rosin temperature at rest minus the stated ambient"};
+    return {
+        {"junction-growth",
+         "limiting static friction grows with the time spent sticking (contact ageing)",
+         "physics reference section 8.2",
+         {growth, onsetTime},
+         junctionGrowth},
+        {"breakaway-jump",
+         "abrupt release at the first slip while the rosin is cold (modified thermal law)",
+         "seed 002 eqs. 6, 12, 13",
+         {jumpCurve},
+         breakawayJump},
+        {"hertz-contact",
+         "contact area proportional to N^(2/3) instead of N",
+         "physics reference section 8.3; seed 001 Fig. 11",
+         {},
+         hertzContact},
+        {"sticking-creep",
+         "viscous-like creep during nominal sticking",
+         "seed 001 section 5.3",
+         {creepResistance},
+         stickingCreep},
+        {"extra-string-damping",
+         "string losses higher than the nominal loss law",
+         "seed 001 Table 1 (stopped-string bracket), Fig. 12c",
+         {lossScale},
+         extraStringDamping},
+        {"ambient-temperature",
+         "the rosin starts warmer or colder than the rig's stated ambient temperature",
+         "seeds 000-002: thermal laws calibrated at the rig's ambient",
+         {ambientOffset},
+         ambientTemperature},
+    };
+}
+
+std::string rangeText(const EffectParameter& p)
+{
+    if (!p.choices.empty())
+        return "the index of one of " + std::to_string(p.choices.size()) + " choices";
+    return gesture::formatNumber(p.min) + ".." + gesture::formatNumber(p.max) + (p.unit.empty() ? "" : " ") +
+           p.unit;
+}
+} // namespace
+
+const std::vector<Effect>& effectCatalog()
+{
+    static const std::vector<Effect> catalog = makeCatalog();
+    return catalog;
+}
+
+std::vector<std::string> effectNames()
+{
+    std::vector<std::string> names;
+    for (const auto& e : effectCatalog())
+        names.push_back(e.name);
+    return names;
+}
+
+const Effect* findEffect(const std::string& name)
+{
+    for (const auto& e : effectCatalog())
+        if (e.name == name)
+            return &e;
+    return nullptr;
+}
+
+std::size_t effectIndex(const Effect& effect)
+{
+    return static_cast<std::size_t>(&effect - effectCatalog().data());
+}
+
+void applyEffect(const Effect& effect, const std::vector<double>& values, SimulationModel& model)
+{
+    if (values.size() != effect.parameters.size())
+        throw std::invalid_argument(effect.name + ": expected " + std::to_string(effect.parameters.size()) +
+                                    " parameter value(s) but got " + std::to_string(values.size()));
+    for (std::size_t i = 0; i < values.size(); ++i)
+    {
+        const auto& p = effect.parameters[i];
+        const double v = values[i];
+        const bool whole = p.choices.empty() || v == std::floor(v);
+        if (!std::isfinite(v) || v < p.min || v > p.max || !whole)
+            throw std::invalid_argument(effect.name + ": parameter " + p.name + ": expected " + rangeText(p) +
+                                        " but got " + gesture::formatNumber(v));
+    }
+    effect.change(model, values);
+}
+
+std::string formatParameterValue(const EffectParameter& p, double value)
+{
+    if (!p.choices.empty())
+    {
+        const auto i = static_cast<std::size_t>(value);
+        return i < p.choices.size() ? p.choices[i] : gesture::formatNumber(value);
+    }
+    return gesture::formatNumber(value) + (p.unit.empty() ? "" : " " + p.unit);
+}
+
+std::string describeEffect(const Effect& effect, const std::vector<double>& values)
+{
+    std::string text = effect.name;
+    for (std::size_t i = 0; i < effect.parameters.size() && i < values.size(); ++i)
+        text += (i ? ", " : ": ") + effect.parameters[i].name + " = " +
+                formatParameterValue(effect.parameters[i], values[i]);
+    return text;
+}
+
+} // namespace rosin::discovery

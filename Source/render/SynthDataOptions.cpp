@@ -1,0 +1,224 @@
+#include "SynthDataOptions.h"
+
+#include <algorithm>
+#include <charconv>
+#include <limits>
+
+#include "CommandLine.h"
+#include "ScanOptions.h"
+#include "config/ConfigError.h"
+#include "config/JsonObject.h"
+#include "config/PresetLoader.h"
+#include "gesture/GestureLimits.h"
+#include "lab/scan/ModelSpec.h"
+
+namespace rosin::cli
+{
+
+namespace
+{
+using config::ConfigError;
+using discovery::Effect;
+using discovery::EffectRequest;
+
+// Options of synth-data itself; the grid ones go to rosin scan's parser unchanged.
+const std::vector<std::string> kOwnOptions = {"--effect", "--scan",  "--preset",  "--seed",
+                                              "--out",    "--truth", "--channels"};
+const std::vector<std::string> kGridOptions = {
+    "--beta",     "--grid",        "--force-range", "--acceleration-range", "--bow-speed", "--beta-range",
+    "--duration", "--sample-rate", "--threads"};
+
+[[noreturn]] void bad(const std::string& option, const std::string& expected, const std::string& value)
+{
+    throw ConfigError(option, "", expected, "\"" + value + "\"");
+}
+
+bool contains(const std::vector<std::string>& list, const std::string& value)
+{
+    return std::find(list.begin(), list.end(), value) != list.end();
+}
+
+std::vector<std::string> values(const std::vector<Option>& options, const std::string& name)
+{
+    std::vector<std::string> found;
+    for (const auto& o : options)
+        if (o.name == name)
+            found.push_back(*o.value);
+    return found;
+}
+
+std::optional<std::string> last(const std::vector<Option>& options, const std::string& name)
+{
+    const auto all = values(options, name);
+    return all.empty() ? std::nullopt : std::optional<std::string>(all.back());
+}
+
+std::string effectChoices()
+{
+    std::vector<std::string> names{"none"};
+    for (const auto& n : discovery::effectNames())
+        names.push_back(n);
+    return config::oneOfText(names);
+}
+
+// "name=value" for one parameter of `effect`: a number in its range, or one of its choices by name.
+void parameterValue(const Effect& effect, const std::string& item, const std::string& whole,
+                    EffectRequest& request)
+{
+    const auto eq = item.find('=');
+    std::vector<std::string> names;
+    for (const auto& p : effect.parameters)
+        names.push_back(p.name);
+    const std::string expected =
+        effect.parameters.empty()
+            ? effect.name + " without parameters"
+            : effect.name + " parameters as NAME=VALUE, NAME " + config::oneOfText(names);
+    const auto it = std::find(names.begin(), names.end(), item.substr(0, eq));
+    if (eq == std::string::npos || it == names.end())
+        bad("--effect", expected, whole);
+    const std::size_t index = static_cast<std::size_t>(it - names.begin());
+    const auto& p = effect.parameters[index];
+    const std::string text = item.substr(eq + 1);
+    double v = 0.0;
+    if (!p.choices.empty())
+    {
+        const auto choice = std::find(p.choices.begin(), p.choices.end(), text);
+        if (choice == p.choices.end())
+            bad("--effect", p.name + " " + config::oneOfText(p.choices), whole);
+        v = static_cast<double>(choice - p.choices.begin());
+    }
+    else
+    {
+        v = parseNumber("--effect", text);
+        if (!(v >= p.min && v <= p.max))
+            bad("--effect",
+                p.name + " in " + gesture::formatNumber(p.min) + ".." + gesture::formatNumber(p.max) +
+                    (p.unit.empty() ? "" : " (" + p.unit + ")"),
+                whole);
+    }
+    request.fixed[index] = v;
+}
+
+// "NAME" or "NAME:param=value,param=value".
+EffectRequest effectRequest(const std::string& text)
+{
+    const auto colon = text.find(':');
+    const Effect* effect = discovery::findEffect(text.substr(0, colon));
+    if (effect == nullptr)
+        bad("--effect", effectChoices(), text);
+    EffectRequest request{effect, std::vector<std::optional<double>>(effect->parameters.size())};
+    if (colon == std::string::npos)
+        return request;
+    const std::string list = text.substr(colon + 1);
+    std::size_t begin = 0;
+    while (begin <= list.size())
+    {
+        const std::size_t comma = std::min(list.find(',', begin), list.size());
+        parameterValue(*effect, list.substr(begin, comma - begin), text, request);
+        begin = comma + 1;
+    }
+    return request;
+}
+
+std::vector<EffectRequest> effects(const std::vector<std::string>& texts)
+{
+    if (texts.empty())
+        throw UsageError("--effect NAME|none is required (" + effectChoices() +
+                         "; repeat it to hide several)");
+    if (texts.size() > 1 && contains(texts, "none"))
+        bad("--effect", "none alone, or one or more effects", "none");
+    if (texts.front() == "none")
+        return {};
+    std::vector<EffectRequest> requests;
+    for (const auto& text : texts)
+    {
+        requests.push_back(effectRequest(text));
+        for (std::size_t i = 0; i + 1 < requests.size(); ++i)
+            if (requests[i].effect == requests.back().effect)
+                throw ConfigError("--effect", "", "each effect once",
+                                  "\"" + requests.back().effect->name + "\" twice");
+    }
+    return requests;
+}
+
+std::uint64_t seed(const std::string& text)
+{
+    std::uint64_t v = 0;
+    const char* end = text.data() + text.size();
+    const auto r = std::from_chars(text.data(), end, v);
+    if (text.empty() || r.ec != std::errc() || r.ptr != end)
+        bad("--seed", "an integer in 0.." + std::to_string(std::numeric_limits<std::uint64_t>::max()), text);
+    return v;
+}
+
+// rosin scan's parser on the grid options, behind synth-data's defaults (the last value of an option wins).
+ScanCommandLine scanGrid(const std::string& kind, const std::vector<Option>& options)
+{
+    std::vector<std::string> args{
+        kind,     "--duration",     kSynthDefaultDuration, "--sample-rate", kSynthDefaultSampleRate,
+        "--grid", kSynthDefaultGrid};
+    if (kind == "guettler")
+        args.insert(args.end(), {"--beta", kSynthDefaultBeta});
+    else
+        args.insert(args.end(), {"--ramp", "0"}); // "steady" in the dataset format: the speed from t = 0
+    for (const auto& o : options)
+        if (contains(kGridOptions, o.name))
+            args.insert(args.end(), {o.name, *o.value});
+    args.insert(args.end(), {"--out", "unused", "--no-progress", "--no-figures"});
+    return parseScanCommandLine(args);
+}
+} // namespace
+
+SynthDataCommandLine parseSynthDataCommandLine(const std::vector<std::string>& args)
+{
+    std::vector<std::string> withValue = kOwnOptions;
+    withValue.insert(withValue.end(), kGridOptions.begin(), kGridOptions.end());
+    const std::vector<Option> options = parseOptions(args, withValue, {"--help", "-h"});
+    SynthDataCommandLine c;
+    if (std::any_of(options.begin(), options.end(),
+                    [](const Option& o) { return o.name == "--help" || o.name == "-h"; }))
+    {
+        c.help = true;
+        return c;
+    }
+    const auto kind = last(options, "--scan");
+    if (!kind)
+        throw UsageError("--scan guettler|schelleng is required");
+    if (*kind != "guettler" && *kind != "schelleng")
+        bad("--scan", "one of guettler, schelleng", *kind);
+    auto& s = c.settings;
+    s.effects = effects(values(options, "--effect"));
+
+    const ScanCommandLine grid = scanGrid(*kind, options);
+    s.scan = grid.spec;
+    c.threads = grid.run.threads;
+    if (s.scan.trialSeconds < kSynthMinDuration)
+        bad("--duration", "at least " + gesture::formatNumber(kSynthMinDuration) + " s",
+            gesture::formatNumber(s.scan.trialSeconds));
+    s.preset =
+        last(options, "--preset") ? config::loadPreset(*last(options, "--preset")) : config::defaultPreset();
+    s.scan.model = scan::modelFromPreset(s.preset);
+
+    const auto seedText = last(options, "--seed");
+    if (!seedText)
+        throw UsageError("--seed S is required (the same seed gives the same dataset)");
+    s.seed = seed(*seedText);
+    if (const auto channels = last(options, "--channels"))
+    {
+        if (*channels != "basic" && *channels != "all")
+            bad("--channels", "one of basic, all", *channels);
+        s.allChannels = *channels == "all";
+    }
+    const auto out = last(options, "--out");
+    if (!out)
+        throw UsageError("--out DIR is required (the dataset folder)");
+    if (out->empty())
+        bad("--out", "a folder name", *out);
+    c.out = *out;
+    c.truth = last(options, "--truth");
+    if (c.truth && c.truth->empty())
+        bad("--truth", "a file name", *c.truth);
+    return c;
+}
+
+} // namespace rosin::cli
