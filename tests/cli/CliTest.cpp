@@ -2,6 +2,8 @@
 // JUCE.
 #include <gtest/gtest.h>
 
+#include "CliSupport.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -16,27 +18,9 @@
 namespace
 {
 
-struct Result
-{
-    int status = -1;
-    std::string out, err;
-};
-
-std::string quote(const std::string& arg)
-{
-    std::string q = "'";
-    for (char c : arg)
-        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-std::string slurp(const std::string& path)
-{
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using rosin::test::cli::quote;
+using rosin::test::cli::Result;
+using rosin::test::cli::slurp;
 
 class Cli : public ::testing::Test
 {

@@ -3,6 +3,8 @@
 // script.
 #include <gtest/gtest.h>
 
+#include "CliSupport.h"
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -15,27 +17,9 @@ namespace
 {
 namespace fs = std::filesystem;
 
-struct Result
-{
-    int status = -1;
-    std::string out, err;
-};
-
-std::string quote(const std::string& arg)
-{
-    std::string q = "'";
-    for (char c : arg)
-        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-std::string slurp(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using rosin::test::cli::quote;
+using rosin::test::cli::Result;
+using rosin::test::cli::slurp;
 
 class ScanCli : public ::testing::Test
 {

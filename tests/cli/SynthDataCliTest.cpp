@@ -5,6 +5,8 @@
 // first-slip mu_s a laboratory would measure rises when junction growth is hidden.
 #include <gtest/gtest.h>
 
+#include "CliSupport.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -26,27 +28,9 @@ namespace
 namespace fs = std::filesystem;
 using namespace rosin::discovery;
 
-struct Result
-{
-    int status = -1;
-    std::string out, err;
-};
-
-std::string quote(const std::string& arg)
-{
-    std::string q = "'";
-    for (char c : arg)
-        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-std::string slurp(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using rosin::test::cli::quote;
+using rosin::test::cli::Result;
+using rosin::test::cli::slurp;
 
 class SynthDataCli : public ::testing::Test
 {
