@@ -11,11 +11,8 @@
 
 #include <juce_events/juce_events.h>
 
+#include "PeerBenchmark.h"
 #include "plugin/RosinProcessor.h"
-
-#ifdef ROSIN_HAVE_STK
-#include <stk/Bowed.h>
-#endif
 
 namespace
 {
@@ -48,53 +45,26 @@ void benchCelloChord(benchmark::State& state)
     state.counters["sounding strings"] = processor.activeEngine()->instrument.stringCount();
 }
 
-#ifdef ROSIN_HAVE_STK
-void benchStkBowed(benchmark::State& state)
-{
-    stk::Stk::setSampleRate(kSampleRate);
-    stk::Bowed bowed(20.0);
-    bowed.noteOn(146.8, 0.8);
-    double sink = 0.0;
-    for (auto _ : state)
-        for (int k = 0; k < kBlock; ++k)
-            sink += bowed.tick();
-    benchmark::DoNotOptimize(sink);
-    state.SetItemsProcessed(state.iterations() * kBlock);
-}
-#endif
-
-class BlockReporter : public benchmark::ConsoleReporter
-{
-  public:
-    std::map<std::string, double> nsPerBlock;
-    void ReportRuns(const std::vector<Run>& runs) override
-    {
-        ConsoleReporter::ReportRuns(runs);
-        for (const auto& r : runs)
-            if (r.run_type == Run::RT_Iteration && r.iterations > 0)
-                nsPerBlock[r.benchmark_name()] =
-                    r.GetAdjustedRealTime() * (r.time_unit == benchmark::kMicrosecond ? 1e3 : 1.0);
-    }
-};
-
 } // namespace
 
 int main(int argc, char** argv)
 {
     juce::ScopedJuceInitialiser_GUI juce;
 #ifdef ROSIN_HAVE_STK
-    benchmark::RegisterBenchmark("STK_Bowed", benchStkBowed)->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark("STK_Bowed", [](benchmark::State& st)
+                                 { rosin::bench::benchStkBowed(st, kSampleRate, kBlock); })
+        ->Unit(benchmark::kMicrosecond);
 #endif
     benchmark::RegisterBenchmark("RosinProcessor_cello_4_strings/plastic", benchCelloChord)
         ->Unit(benchmark::kMicrosecond);
     benchmark::Initialize(&argc, argv);
-    BlockReporter reporter;
+    rosin::bench::IterationTimeReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
     const double blockSeconds = kBlock / kSampleRate;
-    const double stk = reporter.nsPerBlock.count("STK_Bowed") ? reporter.nsPerBlock["STK_Bowed"] : 0.0;
+    const double stk = reporter.peer();
     std::printf("\n%-44s %14s %12s %10s\n", "128-sample block at 48 kHz", "us/block", "% of a core",
                 "vs STK");
-    for (const auto& [name, ns] : reporter.nsPerBlock)
+    for (const auto& [name, ns] : reporter.nsPerIteration)
         std::printf("%-44s %14.1f %11.2f%% %10s\n", name.c_str(), ns / 1e3, 100.0 * ns * 1e-9 / blockSeconds,
                     stk > 0 ? (std::to_string(ns / stk).substr(0, 5) + "x").c_str() : "n/a");
     benchmark::Shutdown();

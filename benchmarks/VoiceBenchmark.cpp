@@ -8,12 +8,10 @@
 #include <map>
 #include <string>
 
+#include "PeerBenchmark.h"
 #include "physics/friction/FrictionLawFactory.h"
 #include "physics/instrument/BowedInstrument.h"
 #include "physics/voice/BowedStringVoice.h"
-#ifdef ROSIN_HAVE_STK
-#include <stk/Bowed.h>
-#endif
 
 namespace
 {
@@ -64,42 +62,15 @@ void benchCello(benchmark::State& state)
     state.SetItemsProcessed(state.iterations() * kBlock);
 }
 
-#ifdef ROSIN_HAVE_STK
-void benchStkBowed(benchmark::State& state)
-{
-    stk::Stk::setSampleRate(kSampleRate);
-    stk::Bowed bowed(20.0);
-    bowed.noteOn(146.8, 0.8);
-    double sink = 0.0;
-    for (auto _ : state)
-        for (int k = 0; k < kBlock; ++k)
-            sink += bowed.tick();
-    benchmark::DoNotOptimize(sink);
-    state.SetItemsProcessed(state.iterations() * kBlock);
-}
-#endif
-
-/// Collects ns per sample per benchmark while the console reporter prints as usual.
-class RatioReporter : public benchmark::ConsoleReporter
-{
-  public:
-    std::map<std::string, double> nsPerSample;
-    void ReportRuns(const std::vector<Run>& runs) override
-    {
-        ConsoleReporter::ReportRuns(runs);
-        for (const auto& r : runs)
-            if (r.run_type == Run::RT_Iteration && r.iterations > 0)
-                nsPerSample[r.benchmark_name()] =
-                    r.GetAdjustedRealTime() / kBlock * (r.time_unit == benchmark::kMicrosecond ? 1e3 : 1.0);
-    }
-};
 } // namespace
 
 int main(int argc, char** argv)
 {
     using rosin::physics::FrictionModel;
 #ifdef ROSIN_HAVE_STK
-    benchmark::RegisterBenchmark("STK_Bowed", benchStkBowed)->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark("STK_Bowed", [](benchmark::State& st)
+                                 { rosin::bench::benchStkBowed(st, kSampleRate, kBlock); })
+        ->Unit(benchmark::kMicrosecond);
 #endif
     for (auto model : {FrictionModel::Classical, FrictionModel::Reconstructed, FrictionModel::Plastic,
                        FrictionModel::Viscous, FrictionModel::ModifiedBow, FrictionModel::ModifiedRod})
@@ -108,15 +79,18 @@ int main(int argc, char** argv)
             ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark("Rosin_cello_4_strings/plastic", benchCello)->Unit(benchmark::kMicrosecond);
     benchmark::Initialize(&argc, argv);
-    RatioReporter reporter;
+    rosin::bench::IterationTimeReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
-    const double stk = reporter.nsPerSample.count("STK_Bowed") ? reporter.nsPerSample["STK_Bowed"] : 0.0;
+    const double stk = reporter.peer() / kBlock;
     std::printf("\n%-36s %12s %14s %10s %12s\n", "voice", "ns/sample", "x real time", "vs STK",
                 "% of a core");
-    for (const auto& [name, ns] : reporter.nsPerSample)
+    for (const auto& [name, perIteration] : reporter.nsPerIteration)
+    {
+        const double ns = perIteration / kBlock;
         std::printf("%-36s %12.1f %14.0f %10s %11.2f%%\n", name.c_str(), ns, 1e9 / (ns * kSampleRate),
                     stk > 0 ? (std::to_string(ns / stk).substr(0, 5) + "x").c_str() : "n/a",
                     100.0 * ns * kSampleRate / 1e9);
+    }
     benchmark::Shutdown();
     return 0;
 }
