@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "CommandLine.h"
+#include "DiscoverCommand.h"
 #include "RenderCommand.h"
 #include "ScanCommand.h"
 #include "SynthDataCommand.h"
@@ -25,7 +26,7 @@ struct Command
     std::string (*help)();
 };
 
-// One entry (and one file) per subcommand; later: discover.
+// One entry (and one file) per subcommand.
 const Command kCommands[] = {
     {"render", "render a bow gesture to a WAV of the bridge force (and a probe of internal channels)",
      runRender, renderHelp},
@@ -34,6 +35,8 @@ const Command kCommands[] = {
     {"synth-data",
      "a measured-like dataset from the model with physical effects hidden (discovery test data)",
      runSynthData, synthDataHelp},
+    {"discover", "where a measured dataset and the model disagree, and which physical effect is missing",
+     runDiscover, discoverHelp},
 };
 
 const Command* findCommand(const std::string& name)

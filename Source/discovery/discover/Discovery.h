@@ -1,0 +1,50 @@
+#pragma once
+// rosin discover's engine (issue 5 item 1), JUCE-free: from a dataset and the features of its measured
+// trials, the baseline's gap per feature, the effect search, and the gap after. The command reads the
+// trial files (discovery/io) and writes the outputs (DiscoveryReport.h).
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "EffectSearch.h"
+#include "FeatureScatter.h"
+#include "GapMeasure.h"
+#include "TrialFeatures.h"
+#include "discovery/Dataset.h"
+#include "discovery/ScanGrid.h"
+
+namespace rosin::discovery
+{
+
+struct DiscoverySettings
+{
+    std::string baseline = "plastic";
+    unsigned threads = 1;
+    std::uint64_t seed = 0;
+    std::ostream* log = nullptr;
+};
+
+struct Discovery
+{
+    std::string datasetFolder;
+    std::string baselineFriction;
+    ScanGrid grid;
+    std::size_t trialsUsed = 0, trialsSkipped = 0;
+    std::vector<std::size_t> used; ///< dataset indices of the trials used
+    std::vector<std::size_t> training, heldOut;
+    FeatureScatter scatter;
+    std::vector<TrialFeatures> measured, baseline, final; ///< indexed like dataset.trials
+    GapSummary gapBefore, gapAfter;
+    std::array<std::string, kFeatureCount> whereBefore, whereAfter;
+    SearchResult search;
+    std::vector<GapSummary> stepGaps; ///< over all used trials after each adopted effect
+    std::string status;               ///< "effect-found" | "no-significant-discrepancy"
+    double seconds = 0.0;
+};
+
+/// `measured[i]` are the features of dataset trial i (valid trials only are read), `seconds[i]` its length.
+Discovery runDiscovery(const Dataset& dataset, std::vector<TrialFeatures> measured,
+                       std::vector<double> seconds, const DiscoverySettings& settings);
+
+} // namespace rosin::discovery

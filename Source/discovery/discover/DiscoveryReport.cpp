@@ -1,0 +1,191 @@
+#include "DiscoveryReport.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace rosin::discovery
+{
+
+namespace
+{
+constexpr const char* kGapDefinition =
+    "per feature: sqrt(max(0, mean z^2 - 1)), z = (measured - simulated) / scatter of the measurement "
+    "(+-3 when only one side shows the feature); overall: mean over features present in >= 3 trials; "
+    "0 = agreement within the measurement's scatter";
+
+nlohmann::json parameters(const EffectScore& s)
+{
+    nlohmann::json p = nlohmann::json::object();
+    for (std::size_t j = 0; j < s.effect->parameters.size(); ++j)
+    {
+        const auto& param = s.effect->parameters[j];
+        if (!param.choices.empty())
+            p[param.name] = param.choices[static_cast<std::size_t>(s.values[j])];
+        else
+            p[param.name] = s.values[j];
+    }
+    return p;
+}
+
+nlohmann::json tried(const std::vector<EffectScore>& scores)
+{
+    nlohmann::json a = nlohmann::json::array();
+    for (const auto& s : scores)
+        a.push_back({{"effect", s.effect->name},
+                     {"parameters", parameters(s)},
+                     {"heldOutGain", s.heldOutGain},
+                     {"pValue", s.pValue},
+                     {"significant", s.significant},
+                     {"evaluations", s.evaluations}});
+    return a;
+}
+
+std::string number(double v, const char* format = "%.3g")
+{
+    char text[64];
+    std::snprintf(text, sizeof(text), format, v);
+    return text;
+}
+} // namespace
+
+nlohmann::json discoveryJson(const Discovery& d, const Dataset& dataset)
+{
+    nlohmann::json j;
+    j["dataset"] = d.datasetFolder;
+    j["trialsUsed"] = d.trialsUsed;
+    j["trialsSkipped"] = d.trialsSkipped;
+    j["baseline"] = {{"friction", d.baselineFriction},
+                     {"contact", "galluzzo"},
+                     {"body", dataset.rig.body.value_or("cello")},
+                     {"string", "rig.string of dataset.json"},
+                     {"sensorHighpassHz", dataset.sensor.highpassHz.value_or(0.0)},
+                     {"sampleRate", dataset.sampleRate}};
+    j["gapDefinition"] = kGapDefinition;
+    j["gapBefore"] = d.gapBefore.overall;
+    j["features"] = nlohmann::json::array();
+    for (std::size_t f = 0; f < kFeatureCount; ++f)
+        j["features"].push_back({{"name", featureName(f)},
+                                 {"unit", featureUnit(f)},
+                                 {"scatter", d.scatter.sigma[f]},
+                                 {"scatterMethod", d.scatter.method[f]},
+                                 {"trials", d.gapBefore.count[f]},
+                                 {"gapBefore", d.gapBefore.gap[f]},
+                                 {"gapAfter", d.gapAfter.gap[f]},
+                                 {"where", d.whereBefore[f]},
+                                 {"whereAfter", d.whereAfter[f]}});
+    j["steps"] = nlohmann::json::array();
+    for (std::size_t k = 0; k < d.search.steps.size(); ++k)
+    {
+        const auto& s = d.search.steps[k];
+        j["steps"].push_back({{"effect", s.chosen.effect->name},
+                              {"parameters", parameters(s.chosen)},
+                              {"gapAfter", d.stepGaps[k].overall},
+                              {"heldOutGain", s.chosen.heldOutGain},
+                              {"pValue", s.chosen.pValue},
+                              {"alpha", s.alpha},
+                              {"evidence", describeEvidence(s.chosen, s.alpha)},
+                              {"tried", tried(s.tried)}});
+    }
+    if (!d.search.lastTried.empty())
+        j["notAdopted"] = tried(d.search.lastTried);
+    j["gapAfter"] = d.gapAfter.overall;
+    j["status"] = d.status;
+    j["verdict"] = d.status;
+    j["split"] = {{"training", d.training.size()}, {"heldOut", d.heldOut.size()}, {"rule", "checkerboard"}};
+    j["seconds"] = d.seconds;
+    return j;
+}
+
+nlohmann::json discoveryMaps(const Discovery& d, const Dataset& dataset)
+{
+    nlohmann::json trials = nlohmann::json::array();
+    auto values = [](const TrialFeatures& t)
+    {
+        nlohmann::json o = nlohmann::json::object();
+        for (std::size_t f = 0; f < kFeatureCount; ++f)
+            o[featureName(f)] = t[f] ? nlohmann::json(*t[f]) : nlohmann::json(nullptr);
+        return o;
+    };
+    for (const auto& cell : d.grid.cells)
+        for (std::size_t t : cell.trials)
+            trials.push_back({{"id", dataset.trials[t].id},
+                              {"beta", d.grid.betas[cell.beta]},
+                              {"force", d.grid.forces[cell.force]},
+                              {"motion", d.grid.motion.empty() ? 0.0 : d.grid.motion[cell.motion]},
+                              {"measured", values(d.measured[t])},
+                              {"baseline", values(d.baseline[t])},
+                              {"final", values(d.final[t])}});
+    nlohmann::json changed = nlohmann::json::array();
+    for (std::size_t f = 0; f < kFeatureCount; ++f)
+        if (d.gapBefore.count[f] >= kMinTrialsForGap &&
+            std::abs(d.gapBefore.gap[f] - d.gapAfter.gap[f]) > 0.2)
+            changed.push_back(featureName(f));
+    return {{"motionAxis", d.grid.kind == ScanKind::Schelleng ? "bow speed (m/s)" : "acceleration (m/s^2)"},
+            {"changed", changed},
+            {"trials", trials}};
+}
+
+std::string discoveryMarkdown(const Discovery& d, const Dataset& dataset,
+                              const std::vector<std::string>& figures)
+{
+    std::string m = "# rosin discover: " + d.datasetFolder + "\n\n";
+    m += d.grid.summary() + ". " + std::to_string(d.trialsUsed) + " trials used, " +
+         std::to_string(d.trialsSkipped) +
+         " skipped (marked `valid: false`). Baseline: the rig's string on the " +
+         dataset.rig.body.value_or("cello") + " body, " + d.baselineFriction +
+         " friction, galluzzo contact, simulated with the nominal settings through the dataset's sensor "
+         "high-pass (" +
+         number(dataset.sensor.highpassHz.value_or(0.0)) + " Hz) at " + std::to_string(dataset.sampleRate) +
+         " Hz.\n\n";
+    m += "## Verdict: " + d.status + "\n\n";
+    m += "Overall gap " + number(d.gapBefore.overall) + " before, " + number(d.gapAfter.overall) +
+         " after (" + std::string(kGapDefinition) + ").\n\n";
+    if (d.search.steps.empty())
+        m += "No effect of the catalog reduced the held-out gap significantly (paired sign-flip test at 1 % "
+             "with a Bonferroni correction over the candidates, and a held-out gain of at least 20 %); no "
+             "effect is named.\n\n";
+    m += "## What disagrees, and where\n\n| feature | scatter (method) | trials | gap before | gap after | "
+         "largest before |\n|---|---|---|---|---|---|\n";
+    for (std::size_t f = 0; f < kFeatureCount; ++f)
+        m += std::string("| ") + featureName(f) + " | " + number(d.scatter.sigma[f]) + " " + featureUnit(f) +
+             " (" + d.scatter.method[f] + ") | " + std::to_string(d.gapBefore.count[f]) + " | " +
+             number(d.gapBefore.gap[f]) + " | " + number(d.gapAfter.gap[f]) + " | " + d.whereBefore[f] +
+             " |\n";
+    m += "\n";
+    for (std::size_t k = 0; k < d.search.steps.size(); ++k)
+    {
+        const auto& s = d.search.steps[k];
+        m += "## Step " + std::to_string(k + 1) + ": " + s.chosen.effect->name + "\n\n";
+        m += s.chosen.effect->summary + " (" + s.chosen.effect->source +
+             "). Fitted: " + describeEffect(*s.chosen.effect, s.chosen.values) +
+             ". Gap after this step: " + number(d.stepGaps[k].overall) +
+             ".\n\nWhy: " + describeEvidence(s.chosen, s.alpha) + ".\n\n";
+        m += "Candidates (held-out gain, p):";
+        for (const auto& t : s.tried)
+            m += " " + t.effect->name + " " + number(100.0 * t.heldOutGain, "%.0f") + " % (" +
+                 number(t.pValue, "%.2g") + ");";
+        m += "\n\n";
+    }
+    if (!d.search.lastTried.empty())
+    {
+        m += "## Not adopted\n\nThe last search step found nothing significant (threshold p < " +
+             number(d.search.lastAlpha, "%.2g") + ", gain >= 20 %):";
+        for (const auto& t : d.search.lastTried)
+            m += " " + t.effect->name + " " + number(100.0 * t.heldOutGain, "%.0f") +
+                 " % (p = " + number(t.pValue, "%.2g") + ");";
+        m += "\n\n";
+    }
+    m += "## Figures\n\n";
+    if (figures.empty())
+        m += "No figures were made (the figure script or matplotlib was not available).\n";
+    for (const auto& f : figures)
+        m += "![" + f + "](" + f + ")\n\n";
+    m += "\nMethod: training and held-out halves are a checkerboard over the grid (" +
+         std::to_string(d.training.size()) + " / " + std::to_string(d.heldOut.size()) +
+         " trials); each effect's parameters are fitted on the training half, the gain is measured on the "
+         "held-out half. Time: " +
+         number(d.seconds, "%.1f") + " s.\n";
+    return m;
+}
+
+} // namespace rosin::discovery

@@ -1,0 +1,34 @@
+#pragma once
+// The measurement's own scatter of each feature, the unit of every gap rosin discover reports.
+//   * Repeats (several valid trials in one grid cell): the pooled within-cell standard deviation, when the
+//     cells give at least 5 degrees of freedom.
+//   * Otherwise neighbouring cells: second differences f[i-1] - 2 f[i] + f[i+1] of the measured feature
+//     along the force axis and along the motion axis (acceleration or speed) at each beta; for independent
+//     scatter sigma their standard deviation is sqrt(6) sigma, so sigma = s(d2) / sqrt(6), with s(d2) the
+//     larger of 1.4826 MAD(d2) and the rms of d2 after dropping its largest 10 % (a regime boundary crossing
+//     the grid is an outlier, not scatter; a heavy-tailed noise, as of a feature read at few samples, is
+//     scatter that the MAD alone would miss). The feature's own curvature over the grid adds to it, so this
+//     errs on the side of a larger scatter (a smaller gap).
+//   * Too few triples (< 4): 1.4826 MAD of the feature over all trials (a broad upper bound).
+// Every scatter is at least the feature's resolution (featureResolution). JUCE-free.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "TrialFeatures.h"
+#include "discovery/ScanGrid.h"
+
+namespace rosin::discovery
+{
+
+struct FeatureScatter
+{
+    std::array<double, kFeatureCount> sigma{};
+    std::array<std::string, kFeatureCount> method{}; ///< "repeats", "neighbours", "spread", "resolution"
+};
+
+/// `measured` is indexed like dataset.trials.
+FeatureScatter measureScatter(const ScanGrid& grid, const std::vector<TrialFeatures>& measured,
+                              double sampleRate);
+
+} // namespace rosin::discovery

@@ -1,0 +1,136 @@
+#include "GapMeasure.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace rosin::discovery
+{
+
+std::optional<double> normalisedDifference(const std::optional<double>& measured,
+                                           const std::optional<double>& simulated, double sigma)
+{
+    if (measured && simulated)
+        return (*measured - *simulated) / sigma;
+    if (measured)
+        return kMissingZ;
+    if (simulated)
+        return -kMissingZ;
+    return std::nullopt;
+}
+
+GapSummary measureGap(const std::vector<std::size_t>& trials, const std::vector<TrialFeatures>& measured,
+                      const std::vector<TrialFeatures>& simulated, const FeatureScatter& scatter)
+{
+    GapSummary g;
+    for (std::size_t t : trials)
+        for (std::size_t f = 0; f < kFeatureCount; ++f)
+            if (auto z = normalisedDifference(measured[t][f], simulated[t][f], scatter.sigma[f]))
+            {
+                g.meanSquare[f] += *z * *z;
+                ++g.count[f];
+            }
+    std::size_t used = 0;
+    for (std::size_t f = 0; f < kFeatureCount; ++f)
+    {
+        if (g.count[f] > 0)
+            g.meanSquare[f] /= static_cast<double>(g.count[f]);
+        g.gap[f] = std::sqrt(std::max(0.0, g.meanSquare[f] - 1.0));
+        if (g.count[f] >= kMinTrialsForGap)
+        {
+            g.overall += g.gap[f];
+            g.objective += g.meanSquare[f];
+            ++used;
+        }
+    }
+    if (used > 0)
+    {
+        g.overall /= static_cast<double>(used);
+        g.objective /= static_cast<double>(used);
+    }
+    return g;
+}
+
+std::optional<double> trialError(const TrialFeatures& measured, const TrialFeatures& simulated,
+                                 const FeatureScatter& scatter)
+{
+    double sum = 0.0;
+    int n = 0;
+    for (std::size_t f = 0; f < kFeatureCount; ++f)
+        if (auto z = normalisedDifference(measured[f], simulated[f], scatter.sigma[f]))
+        {
+            sum += *z * *z;
+            ++n;
+        }
+    return n > 0 ? std::optional<double>(sum / n) : std::nullopt;
+}
+
+namespace
+{
+std::string range(const std::vector<double>& axis, int half, const char* name, const char* unit)
+{
+    std::size_t lo = 0, hi = axis.size() - 1;
+    if (axis.size() > 1)
+    {
+        const std::size_t mid = axis.size() / 2;
+        if (half == 0)
+            hi = mid - 1;
+        else
+            lo = mid;
+    }
+    char text[120];
+    if (lo == hi)
+        std::snprintf(text, sizeof(text), "%s %.4g%s", name, axis[lo], unit);
+    else
+        std::snprintf(text, sizeof(text), "%s %.4g-%.4g%s", name, axis[lo], axis[hi], unit);
+    return text;
+}
+} // namespace
+
+std::string whereLargest(std::size_t feature, const Dataset& dataset, const ScanGrid& grid,
+                         const std::vector<std::size_t>& trials, const std::vector<TrialFeatures>& measured,
+                         const std::vector<TrialFeatures>& simulated, const FeatureScatter& scatter)
+{
+    (void)dataset;
+    std::vector<int> cellOf(measured.size(), -1);
+    // Region code of each trial: bit 0 upper force half, bit 1 upper motion half, bit 2 upper beta half.
+    auto upper = [](std::size_t index, std::size_t size) { return size > 1 && index >= size / 2 ? 1 : 0; };
+    for (const auto& cell : grid.cells)
+        for (std::size_t t : cell.trials)
+            cellOf[t] = upper(cell.force, grid.forces.size()) |
+                        (upper(cell.motion, std::max<std::size_t>(1, grid.motion.size())) << 1) |
+                        (upper(cell.beta, grid.betas.size()) << 2);
+    double sumSq[8] = {}, sum[8] = {};
+    int n[8] = {};
+    for (std::size_t t : trials)
+    {
+        if (cellOf[t] < 0)
+            continue;
+        if (auto z =
+                normalisedDifference(measured[t][feature], simulated[t][feature], scatter.sigma[feature]))
+        {
+            sumSq[cellOf[t]] += *z * *z;
+            sum[cellOf[t]] += *z;
+            ++n[cellOf[t]];
+        }
+    }
+    int best = -1;
+    for (int r = 0; r < 8; ++r)
+        if (n[r] >= 2 && (best < 0 || sumSq[r] / n[r] > sumSq[best] / n[best]))
+            best = r;
+    if (best < 0)
+        return "";
+    std::string text = range(grid.forces, best & 1, "force", " N");
+    if (!grid.motion.empty())
+        text += ", " + range(grid.motion, (best >> 1) & 1,
+                             grid.kind == ScanKind::Schelleng ? "bow speed" : "acceleration",
+                             grid.kind == ScanKind::Schelleng ? " m/s" : " m/s^2");
+    text += ", " + range(grid.betas, (best >> 2) & 1, "beta", "");
+    const double meanZ = sum[best] / n[best];
+    char tail[160];
+    std::snprintf(tail, sizeof(tail),
+                  ": measured %s the model by %.2g sigma on average (rms %.2g sigma, %d trials)",
+                  meanZ >= 0 ? "above" : "below", std::abs(meanZ), std::sqrt(sumSq[best] / n[best]), n[best]);
+    return text + tail;
+}
+
+} // namespace rosin::discovery

@@ -1,0 +1,76 @@
+#include "ModelRuns.h"
+
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <stdexcept>
+
+#include "discovery/ParallelTrials.h"
+#include "discovery/SensorChain.h"
+#include "discovery/TrialSimulator.h"
+#include "physics/friction/FrictionLawFactory.h"
+
+namespace rosin::discovery
+{
+
+SimulationModel baselineModel(const Dataset& dataset, const std::string& friction)
+{
+    const auto names = physics::frictionModelNames();
+    if (std::find(names.begin(), names.end(), friction) == names.end())
+    {
+        std::string list;
+        for (const auto& n : names)
+            list += (list.empty() ? "" : ", ") + n;
+        throw std::invalid_argument("--baseline: expected a friction law (" + list + ") but got \"" +
+                                    friction + "\"");
+    }
+    SimulationModel model;
+    model.preset.name = "discover-baseline";
+    model.preset.string = dataset.rig.string;
+    model.preset.friction = friction;
+    const std::string body = dataset.rig.body.value_or("cello");
+    if (body != "cello" && body != "violin" && body != "rigid")
+        throw DatasetError(dataset.descriptionPath(), "rig.body",
+                           "\"cello\", \"violin\" or \"rigid\" (rosin discover simulates no other body)",
+                           "\"" + body + "\"");
+    model.preset.body = body;
+    return model;
+}
+
+std::vector<TrialFeatures> simulateFeatures(const SimulationModel& model, const Dataset& dataset,
+                                            const std::vector<std::size_t>& trials,
+                                            const std::vector<double>& seconds, unsigned threads)
+{
+    std::vector<TrialFeatures> out(dataset.trials.size());
+    auto makeWorker = [&model, &dataset, &seconds]() -> std::function<TrialFeatures(std::size_t)>
+    {
+        // One simulator per ambient temperature (usually one): preparing a thermal law calibrates it.
+        auto simulators = std::make_shared<std::map<double, std::unique_ptr<TrialSimulator>>>();
+        return [simulators, &model, &dataset, &seconds](std::size_t i)
+        {
+            const Trial& trial = dataset.trials[i];
+            const double ambient = dataset.ambientTemperature(trial).value_or(kCalibrationAmbient);
+            auto& sim = (*simulators)[ambient];
+            if (!sim)
+            {
+                SimulationModel m = model;
+                m.preset.ambientOffset += ambient - kCalibrationAmbient;
+                sim = std::make_unique<TrialSimulator>(m, static_cast<double>(dataset.sampleRate));
+            }
+            TrialSettings s;
+            s.beta = trial.beta;
+            s.bowForce = trial.bowForce;
+            s.gesture = trial.gesture;
+            s.seconds = seconds[i];
+            std::vector<double> force = channelSamples(sim->run(s), "bridgeForce");
+            if (dataset.sensor.highpassHz && *dataset.sensor.highpassHz > 0.0)
+                firstOrderHighPass(force, *dataset.sensor.highpassHz, dataset.sampleRate);
+            return computeTrialFeatures(force, featureContext(dataset, trial));
+        };
+    };
+    runParallel<TrialFeatures>(trials, threads, makeWorker,
+                               [&out](std::size_t i, TrialFeatures&& f) { out[i] = f; });
+    return out;
+}
+
+} // namespace rosin::discovery

@@ -1,0 +1,32 @@
+#pragma once
+// The baseline model of a dataset and the simulation of its trials through the dataset's measurement chain.
+// The baseline is the galluzzo-rig preset with the rig's string (dataset.json's rig.string), its body, the
+// chosen friction law and the galluzzo contact; the rosin starts at the trial's ambient temperature (the
+// thermal laws are calibrated at 20 C: ambientOffset = T - 20). A simulated trial runs with the nominal
+// settings and the measured trial's length through TrialSimulator (as rosin synth-data does), then the
+// sensor high-pass of SensorChain (no noise), and is analysed by computeTrialFeatures like a measurement.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "TrialFeatures.h"
+#include "discovery/Dataset.h"
+#include "discovery/SimulationModel.h"
+
+namespace rosin::discovery
+{
+
+/// The rig's calibration ambient of the thermal laws, deg C.
+inline constexpr double kCalibrationAmbient = 20.0;
+
+/// Throws DatasetError naming dataset.json's rig.body if the body is not "cello", "violin" or "rigid", and
+/// std::invalid_argument if `friction` is not a friction law name.
+SimulationModel baselineModel(const Dataset& dataset, const std::string& friction);
+
+/// Features of the dataset's trials `trials` (indices into dataset.trials) simulated with `model`;
+/// `seconds[i]` is trial i's length. Results are indexed like dataset.trials (others left empty).
+std::vector<TrialFeatures> simulateFeatures(const SimulationModel& model, const Dataset& dataset,
+                                            const std::vector<std::size_t>& trials,
+                                            const std::vector<double>& seconds, unsigned threads);
+
+} // namespace rosin::discovery

@@ -1,0 +1,123 @@
+#include "TrialFeatures.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "lab/FirstSlip.h"
+#include "lab/RegimeClassifier.h"
+#include "lab/SlipOnsets.h"
+#include "lab/TransientLength.h"
+
+namespace rosin::discovery
+{
+
+namespace
+{
+constexpr double kTransientCap = 20.0;
+constexpr double kCreepPoint = 0.6;   ///< read the rise at this share of t1
+constexpr double kCreepWindow = 0.05; ///< averaged over +- this share of t1
+
+std::optional<double> creepIndex(const std::vector<double>& force, const lab::FirstSlip& slip,
+                                 const FeatureContext& c)
+{
+    const std::vector<double> x =
+        c.highpassHz > 0.0 ? lab::undoFirstOrderHighPass(force, c.highpassHz, c.sampleRate) : force;
+    const double t1 = slip.firstSlipTime;
+    const auto from =
+        static_cast<std::size_t>(std::max(0.0, (kCreepPoint - kCreepWindow) * t1 * c.sampleRate));
+    const auto to = static_cast<std::size_t>((kCreepPoint + kCreepWindow) * t1 * c.sampleRate);
+    if (to <= from + 2 || to >= x.size() || !(slip.forceAtSlip > 0.0))
+        return std::nullopt;
+    double sum = 0.0;
+    for (std::size_t k = from; k <= to; ++k)
+        sum += x[k];
+    const double mean = sum / static_cast<double>(to - from + 1);
+    return 1.0 - mean / (kCreepPoint * kCreepPoint * slip.forceAtSlip);
+}
+} // namespace
+
+const char* featureName(std::size_t feature) noexcept
+{
+    static const char* const names[kFeatureCount] = {
+        "staticFriction", "jump", "creep", "firstSlipTime", "transientPeriods", "pitchCents"};
+    return feature < kFeatureCount ? names[feature] : "?";
+}
+
+const char* featureUnit(std::size_t feature) noexcept
+{
+    static const char* const units[kFeatureCount] = {"", "", "", "s", "periods", "cents"};
+    return feature < kFeatureCount ? units[feature] : "";
+}
+
+double featureResolution(std::size_t feature, double sampleRate) noexcept
+{
+    switch (feature)
+    {
+    case kStaticFriction:
+    case kJump:
+        return 0.002;
+    case kCreep:
+        return 0.005;
+    case kFirstSlipTime:
+        return std::max(1e-4, 2.0 / sampleRate);
+    case kTransientPeriods:
+        return 0.5;
+    default:
+        return 1.0;
+    }
+}
+
+FeatureContext featureContext(const Dataset& dataset, const Trial& trial)
+{
+    FeatureContext c;
+    c.sampleRate = dataset.sampleRate;
+    c.beta = trial.beta;
+    c.bowForce = trial.bowForce;
+    c.gesture = trial.gesture;
+    c.periodSeconds = 1.0 / dataset.rig.string.fundamental();
+    c.highpassHz = dataset.sensor.highpassHz.value_or(0.0);
+    c.noiseRms = dataset.sensor.noiseRms.value_or(0.0);
+    return c;
+}
+
+TrialFeatures computeTrialFeatures(const std::vector<double>& force, const FeatureContext& c)
+{
+    TrialFeatures f;
+    const double periodSamples = c.periodSeconds * c.sampleRate;
+    lab::ForceOnsetOptions onsetOptions;
+    onsetOptions.noiseRms = c.noiseRms;
+    if (std::holds_alternative<ConstantAcceleration>(c.gesture))
+    {
+        lab::FirstSlipOptions o;
+        o.sampleRate = c.sampleRate;
+        o.beta = c.beta;
+        o.bowForce = c.bowForce;
+        o.periodSeconds = c.periodSeconds;
+        o.highPassCutoffHz = c.highpassHz;
+        const lab::FirstSlip slip = lab::firstSlipFromBridgeForce(force, o);
+        if (slip.found)
+        {
+            f[kStaticFriction] = slip.muStatic;
+            f[kJump] = slip.jump;
+            f[kFirstSlipTime] = slip.firstSlipTime;
+            f[kCreep] = creepIndex(force, slip, c);
+            const auto onsets = lab::slipOnsetsFromBridgeForce(force, periodSamples, onsetOptions);
+            lab::TransientOptions t;
+            t.capPeriods = kTransientCap;
+            t.windowEnd = force.size();
+            const lab::TransientLength tr = lab::measureTransient(onsets, periodSamples, t);
+            if (tr.slipped && (tr.periods || !tr.insufficientData))
+                f[kTransientPeriods] = std::min(tr.periods.value_or(kTransientCap), kTransientCap);
+        }
+    }
+    else if (std::holds_alternative<Steady>(c.gesture))
+    {
+        const lab::RegimeAnalysis r = lab::classifyFromBridgeForce(
+            force, periodSamples, lab::AnalysisWindow{force.size() / 2, 0}, onsetOptions);
+        if (r.regime == lab::Regime::Helmholtz)
+            f[kPitchCents] = r.pitchCents;
+    }
+    return f;
+}
+
+} // namespace rosin::discovery

@@ -1,0 +1,68 @@
+#pragma once
+// The features rosin discover compares per trial, computed the same way from a measured and a simulated
+// bridge force (force only, as a laboratory has it; the simulation passes through the dataset's sensor
+// high-pass first). A feature a trial does not show (no slip, no Helmholtz motion) is std::nullopt.
+//
+//   staticFriction   mu_s = F_br(just before the first slip) / ((1 - beta) N)   lab::firstSlipFromBridgeForce
+//   jump             (F_br before the first fall - after it) / N                  (sensor high-pass undone)
+//   creep            pre-slip shortfall against the rigid-sticking parabola F ~ t^2:
+//                    1 - F(0.6 t1) / (0.36 F(t1)), F the high-pass-undone force averaged over +-5 % of t1
+//                    around 0.6 t1, F(t1) the fitted force at the slip (0: rigid sticking; > 0: the force
+//                    rises faster than t^2 late in the hold, as a creeping or ageing contact gives)
+//   firstSlipTime    t1, s (the slip at the bow: the first fall minus the travel time beta P / 2)
+//   transientPeriods periods from t1 to lasting Helmholtz motion (lab::measureTransient on the force's slip
+//                    onsets), capped at 20 (the seed's "not reached" counts as 20)
+//   pitchCents       steady gestures in Helmholtz motion: 1200 log2(P / P_m) over the second half
+//                    (lab::classifyFromBridgeForce; the flattening of the Helmholtz period)
+// JUCE-free.
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "discovery/Dataset.h"
+
+namespace rosin::discovery
+{
+
+enum Feature : std::size_t
+{
+    kStaticFriction,
+    kJump,
+    kCreep,
+    kFirstSlipTime,
+    kTransientPeriods,
+    kPitchCents,
+    kFeatureCount
+};
+
+/// "staticFriction", ... (the JSON names).
+const char* featureName(std::size_t feature) noexcept;
+/// The unit of a feature, for reports ("" dimensionless).
+const char* featureUnit(std::size_t feature) noexcept;
+/// The smallest scatter a feature is credited with (its resolution), so a quantised or noise-free feature
+/// does not divide by zero: 0.002 (mu_s, jump), 0.005 (creep), 0.1 ms, 0.5 periods, 1 cent.
+double featureResolution(std::size_t feature, double sampleRate) noexcept;
+
+using TrialFeatures = std::array<std::optional<double>, kFeatureCount>;
+
+/// What the analysis needs to know about the trial and the chain.
+struct FeatureContext
+{
+    double sampleRate = 44100.0;
+    double beta = 0.0899;
+    double bowForce = 1.0; ///< N, nominal
+    Gesture gesture = ConstantAcceleration{1.0};
+    double periodSeconds = 0.0; ///< nominal P of the rig's string
+    double highpassHz = 0.0;    ///< sensor high-pass to undo (0: none)
+    double noiseRms = 0.0;      ///< sensor noise, N (the same threshold for measurement and simulation)
+};
+
+/// The features of one trial from its bridge force (N, as recorded).
+TrialFeatures computeTrialFeatures(const std::vector<double>& bridgeForce, const FeatureContext& context);
+
+/// The context of a dataset's trial.
+FeatureContext featureContext(const Dataset& dataset, const Trial& trial);
+
+} // namespace rosin::discovery

@@ -1,0 +1,176 @@
+#include "DiscoverCommand.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <thread>
+
+#include "CommandLine.h"
+#include "config/ConfigError.h"
+#include "discovery/DatasetReader.h"
+#include "discovery/discover/Discovery.h"
+#include "discovery/discover/DiscoveryReport.h"
+#include "discovery/io/TrialSignals.h"
+
+#ifndef ROSIN_DISCOVER_FIGURE_SCRIPT
+#define ROSIN_DISCOVER_FIGURE_SCRIPT ""
+#endif
+
+namespace rosin::cli
+{
+
+namespace fs = std::filesystem;
+using config::ConfigError;
+
+namespace
+{
+void writeText(const fs::path& path, const std::string& text)
+{
+    std::ofstream f(path, std::ios::binary);
+    f << text;
+    if (!f)
+        throw ConfigError(path.string(), "", "a writable file", "a write failure");
+}
+
+// Runs the figure script if there is one; returns the PNGs it made.
+std::vector<std::string> makeFigures(const fs::path& reportDir, std::ostream& err)
+{
+    std::string script = ROSIN_DISCOVER_FIGURE_SCRIPT;
+    if (const char* env = std::getenv("ROSIN_DISCOVER_FIGURE_SCRIPT"))
+        script = env;
+    if (script.empty() || !fs::exists(script))
+        return {};
+    const std::string python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+    const std::string command = python + " '" + script + "' '" + reportDir.string() + "' >/dev/null 2>&1";
+    if (std::system(command.c_str()) != 0)
+    {
+        err << "warning: the figure script failed; the report has no figures\n";
+        return {};
+    }
+    std::vector<std::string> pngs;
+    for (const auto& e : fs::directory_iterator(reportDir))
+        if (e.path().extension() == ".png")
+            pngs.push_back(e.path().filename().string());
+    std::sort(pngs.begin(), pngs.end());
+    return pngs;
+}
+} // namespace
+
+std::string discoverHelp()
+{
+    return R"(usage: rosin discover DATASET --json OUT.json --report DIR [options]
+
+Compares a measured dataset (format rosin-measurements/1) with Rosin's baseline model, simulated trial by
+trial with the nominal settings through the dataset's sensor high-pass; finds where they disagree
+(features: staticFriction, jump, creep, firstSlipTime, transientPeriods, pitchCents, each normalised by the
+measurement's own scatter), fits each effect of the catalog on a training half (checkerboard over the grid)
+and adopts the one that removes the most held-out gap if significant (paired sign-flip test at 1 %,
+Bonferroni over the candidates, and a gain of at least 20 %); at most three effects.
+
+options:
+  --json FILE          the result (gap before/after per feature, steps, status)
+  --report DIR         report.md (and PNG maps when python3 with matplotlib is available)
+  --baseline LAW       friction law of the baseline (default plastic)
+  --threads N          threads (default: every core)
+  --seed S             seed of the significance test's random sign flips (default 0)
+  -h, --help           this text
+
+exit status: 0 success, 1 bad dataset or value, 2 usage error
+)";
+}
+
+int runDiscover(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+{
+    std::vector<std::string> rest = args;
+    std::string folder;
+    if (!rest.empty() && rest.front().rfind("-", 0) != 0)
+    {
+        folder = rest.front();
+        rest.erase(rest.begin());
+    }
+    const auto options =
+        parseOptions(rest, {"--json", "--report", "--baseline", "--threads", "--seed"}, {"--help", "-h"});
+    std::optional<std::string> json, report;
+    discovery::DiscoverySettings settings;
+    settings.threads = std::max(1u, std::thread::hardware_concurrency());
+    for (const auto& o : options)
+    {
+        if (o.name == "--help" || o.name == "-h")
+        {
+            out << discoverHelp();
+            return kExitOk;
+        }
+        if (o.name == "--json")
+            json = *o.value;
+        else if (o.name == "--report")
+            report = *o.value;
+        else if (o.name == "--baseline")
+            settings.baseline = *o.value;
+        else if (o.name == "--threads")
+        {
+            const double n = parseNumber("--threads", *o.value);
+            if (!(n >= 1 && n <= 1024 && n == std::floor(n)))
+                throw ConfigError("--threads", "", "a whole number 1..1024", *o.value);
+            settings.threads = static_cast<unsigned>(n);
+        }
+        else if (o.name == "--seed")
+        {
+            const double s = parseNumber("--seed", *o.value);
+            if (!(s >= 0 && s == std::floor(s)))
+                throw ConfigError("--seed", "", "a whole number >= 0", *o.value);
+            settings.seed = static_cast<std::uint64_t>(s);
+        }
+    }
+    if (folder.empty())
+        throw UsageError("discover needs a DATASET folder");
+    if (!json || !report)
+        throw UsageError("discover needs --json FILE and --report DIR");
+
+    const discovery::Dataset dataset = discovery::readDatasetDescription(folder);
+    if (!dataset.channelIndex("bridgeForce"))
+        throw ConfigError(dataset.descriptionPath(), "channels", "a \"bridgeForce\" channel (N)",
+                          "none: rosin discover compares bridge forces");
+    const discovery::ScanGrid grid = discovery::findScanGrid(dataset);
+    if (grid.kind != discovery::ScanKind::Guettler && grid.kind != discovery::ScanKind::Schelleng)
+        throw ConfigError(dataset.descriptionPath(), "trials",
+                          "valid trials of one gesture type, constant-acceleration or steady",
+                          discovery::scanKindName(grid.kind));
+    out << "discover " << folder << ": " << grid.summary() << "\n" << std::flush;
+
+    std::vector<discovery::TrialFeatures> measured(dataset.trials.size());
+    std::vector<double> seconds(dataset.trials.size(), 0.0);
+    for (const auto& cell : grid.cells)
+        for (std::size_t t : cell.trials)
+        {
+            const auto signals = discovery::readTrialSignals(dataset, dataset.trials[t]);
+            seconds[t] = static_cast<double>(signals.frames()) / dataset.sampleRate;
+            measured[t] = discovery::computeTrialFeatures(
+                signals.channel("bridgeForce"), discovery::featureContext(dataset, dataset.trials[t]));
+        }
+
+    settings.log = &out;
+    const discovery::Discovery d = discovery::runDiscovery(dataset, std::move(measured), seconds, settings);
+
+    fs::create_directories(*report);
+    writeText(fs::path(*report) / "maps.json", discovery::discoveryMaps(d, dataset).dump(1) + "\n");
+    const auto figures = makeFigures(*report, err);
+    writeText(fs::path(*report) / "report.md", discovery::discoveryMarkdown(d, dataset, figures));
+    writeText(*json, discovery::discoveryJson(d, dataset).dump(2) + "\n");
+
+    char line[200];
+    std::snprintf(line, sizeof(line), "%s: gap %.3g -> %.3g", d.status.c_str(), d.gapBefore.overall,
+                  d.gapAfter.overall);
+    out << line;
+    for (const auto& s : d.search.steps)
+        out << "; " << discovery::describeEffect(*s.chosen.effect, s.chosen.values);
+    std::snprintf(line, sizeof(line), " (%zu trials used, %zu skipped, %.1f s)\n", d.trialsUsed,
+                  d.trialsSkipped, d.seconds);
+    out << line << "wrote " << *json << " and " << (fs::path(*report) / "report.md").string() << "\n";
+    return kExitOk;
+}
+
+} // namespace rosin::cli
