@@ -251,15 +251,7 @@ RegimeAnalysis classifyFromState(const std::vector<bool>& sticking, const std::v
 RegimeAnalysis classifyFromVoice(const std::vector<physics::VoiceSample>& samples, double periodSamples,
                                  AnalysisWindow window)
 {
-    std::vector<double> force;
-    std::vector<bool> sticking;
-    force.reserve(samples.size());
-    sticking.reserve(samples.size());
-    for (const auto& s : samples)
-    {
-        force.push_back(s.bridgeForce);
-        sticking.push_back(s.sticking);
-    }
+    const auto [force, sticking] = forceAndState(samples);
     const std::size_t end = windowEnd(window, samples.size());
     return classifyFromEpisodes(flybacksOnly(slipEpisodesFromVoice(samples)),
                                 slipFraction(sticking, window.begin, end), samples.size(), force,

@@ -71,6 +71,19 @@ std::vector<SlipEpisode> slipEpisodesFromVoice(const std::vector<physics::VoiceS
     return episodes;
 }
 
+ForceAndState forceAndState(const std::vector<physics::VoiceSample>& samples)
+{
+    ForceAndState out;
+    out.bridgeForce.reserve(samples.size());
+    out.sticking.reserve(samples.size());
+    for (const auto& s : samples)
+    {
+        out.bridgeForce.push_back(s.bridgeForce);
+        out.sticking.push_back(s.sticking);
+    }
+    return out;
+}
+
 std::vector<SlipEpisode> slipEpisodesFromRelativeVelocity(const std::vector<double>& relativeVelocity,
                                                           double threshold,
                                                           const std::vector<double>& bowVelocity)

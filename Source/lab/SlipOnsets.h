@@ -33,6 +33,15 @@ std::vector<SlipEpisode> slipEpisodesFromState(const std::vector<bool>& sticking
 /// plugin's RegimeDetector count them.
 std::vector<SlipEpisode> slipEpisodesFromVoice(const std::vector<physics::VoiceSample>& samples);
 
+/// The bridge force and the sticking flag of a simulation's samples, as the force- and state-based
+/// analyses take them.
+struct ForceAndState
+{
+    std::vector<double> bridgeForce;
+    std::vector<bool> sticking;
+};
+ForceAndState forceAndState(const std::vector<physics::VoiceSample>& samples);
+
 /// Episodes from the relative velocity dv = v - v_b at the bow (m/s): sliding where |dv| > threshold (m/s).
 /// With bowVelocity (same length, or empty) each episode also records whether it was a flyback.
 /// Reference §7.2 suggests threshold = 1 % of v_b to ignore numerical chatter.

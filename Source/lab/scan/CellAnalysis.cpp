@@ -24,15 +24,7 @@ lab::AnalysisWindow steadyWindow(std::size_t n, const TrialContext& c)
 
 void addFirstSlip(const std::vector<physics::VoiceSample>& samples, const TrialContext& c, CellResult& r)
 {
-    std::vector<double> force;
-    std::vector<bool> sticking;
-    force.reserve(samples.size());
-    sticking.reserve(samples.size());
-    for (const auto& s : samples)
-    {
-        force.push_back(s.bridgeForce);
-        sticking.push_back(s.sticking);
-    }
+    const auto [force, sticking] = lab::forceAndState(samples);
     lab::FirstSlipOptions o;
     o.sampleRate = c.sampleRate;
     o.beta = c.cell.beta;
