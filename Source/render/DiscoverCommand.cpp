@@ -14,7 +14,7 @@
 #include "discovery/DatasetReader.h"
 #include "discovery/discover/Discovery.h"
 #include "discovery/discover/DiscoveryReport.h"
-#include "discovery/io/TrialSignals.h"
+#include "render/dataset/TrialSignals.h"
 
 #ifndef ROSIN_DISCOVER_FIGURE_SCRIPT
 #define ROSIN_DISCOVER_FIGURE_SCRIPT ""

@@ -12,7 +12,7 @@
 #include "config/ConfigError.h"
 #include "discovery/DatasetReader.h"
 #include "discovery/DatasetWriter.h"
-#include "discovery/io/TrialSignals.h"
+#include "render/dataset/TrialSignals.h"
 #include "discovery/synth/SynthRun.h"
 #include "discovery/synth/SynthTruth.h"
 #include "gesture/GestureLimits.h"

@@ -19,7 +19,7 @@
 #include "config/TempFiles.h"
 #include "discovery/DatasetReader.h"
 #include "discovery/EffectCatalog.h"
-#include "discovery/io/TrialSignals.h"
+#include "render/dataset/TrialSignals.h"
 #include "lab/FirstSlip.h"
 #include "lab/scan/Axis.h"
 

@@ -11,7 +11,7 @@
 
 #include "discovery/DatasetFixtures.h"
 #include "discovery/DatasetReader.h"
-#include "discovery/io/TrialSignals.h"
+#include "render/dataset/TrialSignals.h"
 
 namespace rosin::discovery
 {
