@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "physics/rig/OscillatorRigParameters.h"
 #include "physics/string/StringParameters.h"
 #include "physics/thermal/ContactParameters.h"
 
@@ -19,6 +20,14 @@ struct ContactOverrides
     std::optional<double> referenceForce; ///< N_ref, N
     std::optional<double> layerThickness; ///< delta, m
     std::optional<physics::ContactScaling> scaling;
+};
+
+/// Seed 000's single-mode oscillator rig, bowed by a rod, in place of a string and body (preset field "rig").
+struct RigPreset
+{
+    physics::OscillatorRigParameters oscillator;
+    double normalForce = physics::CantileverLoad::normalForce; ///< N: what `steady` without keys presses with
+    double rodSpeed = physics::CantileverLoad::rodSpeed;       ///< m/s: what `steady` without keys moves at
 };
 
 struct Preset
@@ -36,6 +45,7 @@ struct Preset
     bool bendingStiffness = true; ///< EI on (seed 001 Fig. 12f turns it off)
     double ambientOffset = 0.0;   ///< K, rosin temperature at rest minus the calibration's ambient
     double beta = 0.0899;         ///< default bow position for gestures that do not set one
+    std::optional<RigPreset> rig; ///< set: the rig is bowed instead of the string and body
 };
 
 /// The renderer's default: open cello D3 of the seed's Galluzzo rig, cello body, plastic friction,

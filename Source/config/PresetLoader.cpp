@@ -34,6 +34,9 @@ constexpr Range kContactRadius{1e-6, 0.01, "m"};
 constexpr Range kReferenceForce{1e-3, 100.0, "N"};
 constexpr Range kLayerThickness{1e-9, 1e-3, "m"};
 constexpr Range kAmbientOffset{-50.0, 100.0, "K"};
+constexpr Range kRigFrequency{1.0, 10000.0, "Hz"};
+constexpr Range kRigQ{0.6, 1e5, ""};
+constexpr Range kRigMass{1e-5, 100.0, "kg"};
 
 physics::StringParameters catalogueString(const JsonObject& owner, const std::string& key,
                                           const std::string& name)
@@ -100,6 +103,26 @@ void parseContact(const JsonObject& root, Preset& preset)
     if (const auto scaling = c.optionalOneOf("scaling", {"coulomb", "hertz"}))
         o.scaling = *scaling == "hertz" ? physics::ContactScaling::Hertz : physics::ContactScaling::Coulomb;
 }
+
+// "rig": {"type": "oscillator", "frequency", "qualityFactor", "modalMass", "normalForce", "rodSpeed"}.
+void parseRig(const JsonObject& root, Preset& preset)
+{
+    if (!root.has("rig"))
+        return;
+    const JsonObject r = root.object("rig");
+    r.allowOnly({"type", "frequency", "qualityFactor", "modalMass", "normalForce", "rodSpeed"});
+    if (!r.has("type"))
+        r.fail("type", "\"oscillator\" (the only rig so far)", "nothing");
+    r.optionalOneOf("type", {"oscillator"});
+    RigPreset rig;
+    auto& o = rig.oscillator;
+    o.frequency = r.optionalNumber("frequency", kRigFrequency).value_or(o.frequency);
+    o.qualityFactor = r.optionalNumber("qualityFactor", kRigQ).value_or(o.qualityFactor);
+    o.modalMass = r.optionalNumber("modalMass", kRigMass).value_or(o.modalMass);
+    rig.normalForce = r.optionalNumber("normalForce", gesture::limits::force).value_or(rig.normalForce);
+    rig.rodSpeed = r.optionalNumber("rodSpeed", gesture::limits::speed).value_or(rig.rodSpeed);
+    preset.rig = rig;
+}
 } // namespace
 
 std::string presetDirectory()
@@ -153,7 +176,7 @@ Preset parsePreset(const nlohmann::json& root, const std::string& file, const st
     requireFormat(root, file, "rosin-preset/1");
     const JsonObject r(root, file, "");
     r.allowOnly({"format", "name", "description", "string", "body", "friction", "contact", "torsion",
-                 "bendingStiffness", "ambientOffset", "beta"});
+                 "bendingStiffness", "ambientOffset", "beta", "rig"});
 
     Preset p = defaultPreset();
     p.source = file;
@@ -176,6 +199,7 @@ Preset parsePreset(const nlohmann::json& root, const std::string& file, const st
     p.bendingStiffness = r.optionalBool("bendingStiffness").value_or(p.bendingStiffness);
     p.ambientOffset = r.optionalNumber("ambientOffset", kAmbientOffset).value_or(p.ambientOffset);
     p.beta = r.optionalNumber("beta", gesture::limits::beta).value_or(p.beta);
+    parseRig(r, p);
     return p;
 }
 

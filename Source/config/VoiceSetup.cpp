@@ -4,6 +4,7 @@
 
 #include "JsonObject.h"
 #include "physics/body/BodyParameters.h"
+#include "physics/rig/CantileverContact.h"
 
 namespace rosin::config
 {
@@ -16,7 +17,7 @@ const std::vector<std::string>& bodyNames()
 
 const std::vector<std::string>& contactNames()
 {
-    static const std::vector<std::string> names = {"galluzzo", "schumacher"};
+    static const std::vector<std::string> names = {"galluzzo", "schumacher", "cantilever"};
     return names;
 }
 
@@ -47,13 +48,16 @@ VoiceSetup buildVoiceSetup(const Preset& preset)
     setup.voice.torsion = preset.torsion;
     setup.voice.bendingStiffness = preset.bendingStiffness;
 
-    setup.contact =
-        preset.contact == "schumacher" ? physics::schumacherContact() : physics::galluzzoContact();
+    setup.contact = preset.contact == "schumacher"   ? physics::schumacherContact()
+                    : preset.contact == "cantilever" ? physics::cantileverContact()
+                                                     : physics::galluzzoContact();
     const ContactOverrides& o = preset.contactOverrides;
     setup.contact.rig.radius = o.radius.value_or(setup.contact.rig.radius);
     setup.contact.rig.referenceForce = o.referenceForce.value_or(setup.contact.rig.referenceForce);
     setup.contact.rig.layerThickness = o.layerThickness.value_or(setup.contact.rig.layerThickness);
     setup.contact.rig.scaling = o.scaling.value_or(setup.contact.rig.scaling);
+    if (preset.contact == "cantilever")
+        setup.contact.calibration = setup.contact.rig; // seed 000 calibrated on the rig's own contact
     setup.contact.ambientOffset = preset.ambientOffset;
 
     setup.friction = physics::frictionModelFromName(preset.friction);

@@ -19,7 +19,8 @@ struct VoiceSetup
 
 /// "cello", "violin", "rigid" (physics::bodyByName accepts exactly these).
 const std::vector<std::string>& bodyNames();
-/// "galluzzo", "schumacher": the seed 001 Table 2 contacts.
+/// "galluzzo", "schumacher": the seed 001 Table 2 contacts; "cantilever": seed 000's rig
+/// (CantileverContact.h).
 const std::vector<std::string>& contactNames();
 /// physics::frictionModelNames(), for validation messages.
 std::vector<std::string> frictionNames();

@@ -17,7 +17,10 @@ std::vector<FactoryProgram> loadFactoryPrograms()
         {
             try
             {
-                programs.push_back({name, config::loadPreset(name)});
+                config::Preset preset = config::loadPreset(name);
+                if (preset.rig) // seed 000's oscillator rig: played by `rosin render`, not by the instrument
+                    continue;
+                programs.push_back({name, std::move(preset)});
             }
             catch (const std::exception& e)
             {

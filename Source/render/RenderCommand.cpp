@@ -12,6 +12,7 @@
 #include "LoopOutput.h"
 #include "OfflineRender.h"
 #include "ProbeChannels.h"
+#include "RigRender.h"
 #include "WavWriter.h"
 #include "config/GestureScriptLoader.h"
 #include "config/JsonObject.h"
@@ -246,6 +247,9 @@ std::string renderHelp()
            "  rosin render --preset schumacher-rig --gesture steady:speed=0.1,force=1.18,beta=0.127\n"
            "  rosin render --preset cello-classical --body rigid --gesture my-gesture.json\n"
            "\n"
+           "\n" +
+           rigRenderHelp() +
+           "\n"
            "exit status: 0 success, 1 bad value, file or preset, 2 unknown option or missing value\n"
 #ifdef ROSIN_WITH_PLUGIN_CORE
            "\n" +
@@ -269,12 +273,21 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
 
     // Everything that can fail on input is checked before the first sample is computed.
     const config::Preset preset = choosePreset(o);
+    if (preset.rig && o.body)
+        throw config::ConfigError("--body", "",
+                                  "no --body with a rig preset (its \"rig\" replaces string and body)",
+                                  "\"" + *o.body + "\"");
     const config::VoiceSetup setup = config::buildVoiceSetup(preset);
     gesture::GestureStart start;
     start.beta = preset.beta;
-    const gesture::GestureScript script = chooseGesture(o.gesture, start);
+    const std::string gestureSpec =
+        preset.rig && o.gesture == "steady" ? rigSteadyGesture(*preset.rig) : o.gesture;
+    const gesture::GestureScript script = chooseGesture(gestureSpec, start);
     gesture::BowGesture bow;
     bow.prepare(script, start, o.sampleRate);
+    if (preset.rig) // seed 000's oscillator rig instead of the string and body
+        return renderRig(preset, setup, bow, script.totalSeconds(),
+                         {gestureSpec, o.sampleRate, o.out, o.probe, o.scale, o.loop}, out, err);
 
     std::optional<lab::HysteresisLoop> loop;
     if (o.loop)

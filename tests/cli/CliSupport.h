@@ -1,9 +1,12 @@
 #pragma once
 // What the command-line tests share: the outcome of running `rosin`, shell quoting and reading files back.
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <sys/wait.h>
+#include <vector>
 
 namespace rosin::test::cli
 {
@@ -32,5 +35,20 @@ inline std::string slurp(const std::filesystem::path& path)
     s << in.rdbuf();
     return s.str();
 }
+
+#if defined(ROSIN_BINARY) && defined(ROSIN_SOURCE_PRESET_DIR)
+/// Runs the built `rosin` with `args` in `workDir` (factory presets from the source tree), capturing its
+/// output in workDir/stdout.txt and workDir/stderr.txt.
+inline Result runRosin(const std::string& workDir, const std::vector<std::string>& args)
+{
+    std::string command = "cd " + quote(workDir) + " && ROSIN_PRESET_DIR=" + quote(ROSIN_SOURCE_PRESET_DIR) +
+                          " " + quote(ROSIN_BINARY);
+    for (const auto& a : args)
+        command += " " + quote(a);
+    const std::string out = workDir + "/stdout.txt", err = workDir + "/stderr.txt";
+    const int raw = std::system((command + " >" + quote(out) + " 2>" + quote(err)).c_str());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+}
+#endif
 
 } // namespace rosin::test::cli

@@ -72,7 +72,8 @@ TEST(PluginState, RejectsForeignDataWithoutChangingAnything)
 TEST(PluginPrograms, EveryFactoryPresetIsAProgram)
 {
     plugin::RosinProcessor p;
-    const auto names = config::presetNames();
+    const auto names = instrumentPresetNames();
+    ASSERT_GE(names.size(), 9u); // the rig preset (cantilever) is the only one left out
     ASSERT_EQ(p.getNumPrograms(), static_cast<int>(names.size()));
     for (int i = 0; i < p.getNumPrograms(); ++i)
         EXPECT_EQ(p.getProgramName(i).toStdString(), names[static_cast<std::size_t>(i)]);

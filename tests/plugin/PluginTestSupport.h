@@ -7,9 +7,20 @@
 
 #include "MidiRenderer.h"
 #include "RosinProcessor.h"
+#include "config/PresetLoader.h"
 
 namespace rosin::test
 {
+
+/// The factory presets the plugin offers as programs: every preset but a rig's (seed 000's oscillator).
+inline std::vector<std::string> instrumentPresetNames()
+{
+    std::vector<std::string> names;
+    for (const auto& name : config::presetNames())
+        if (!config::loadPreset(name).rig)
+            names.push_back(name);
+    return names;
+}
 
 inline const juce::MidiMessageSequence& demoPhrase()
 {

@@ -38,7 +38,7 @@ TEST_P(PresetRender, DemoPhraseIsFiniteAndBoundedAtThreeSampleRates)
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(FactoryPresets, PresetRender, ::testing::ValuesIn(config::presetNames()),
+INSTANTIATE_TEST_SUITE_P(FactoryPresets, PresetRender, ::testing::ValuesIn(instrumentPresetNames()),
                          [](const auto& info)
                          {
                              std::string name = info.param;

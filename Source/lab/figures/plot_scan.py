@@ -6,6 +6,8 @@ Usage:
   plot_scan.py compare DIR_A DIR_B --out DIR   compare.png: scan B against scan A (same grid)
   plot_scan.py loop LOOP.csv --out loop.png [--title T]
                                                friction hysteresis loop
+  plot_scan.py rig-loop LOOP.csv --out loop.png [--title T]
+                                               the oscillator rig's mu against sliding speed
 Prints "wrote PATH" for every figure written. Exit status 2 on bad input.
 """
 
@@ -35,6 +37,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import guettler_figures  # noqa: E402
 import schelleng_figures  # noqa: E402
 from loop_figure import loop_figure  # noqa: E402
+from rig_loop_figure import read_rig_loop, rig_loop_figure  # noqa: E402
 from scan_io import ScanError, check_same_grid, read_loop, read_scan  # noqa: E402
 from scan_style import MapSpec  # noqa: E402
 
@@ -105,6 +108,14 @@ def plot_loop(csv_path, out_path, title):
     return [loop_figure(loop, out_path, title, source=csv_path)]
 
 
+def plot_rig_loop(csv_path, out_path, title):
+    try:
+        loop = read_rig_loop(csv_path)
+    except (OSError, ValueError) as error:
+        raise ScanError(str(error)) from error
+    return [rig_loop_figure(loop, out_path, title)]
+
+
 def _parse(argv):
     if argv and argv[0] == "compare":
         parser = argparse.ArgumentParser(prog="plot_scan.py compare",
@@ -112,8 +123,8 @@ def _parse(argv):
         parser.add_argument("dir_a", help="scan A (the base case)")
         parser.add_argument("dir_b", help="scan B (the modified case)")
         parser.add_argument("--out", required=True, help="directory for compare.png")
-    elif argv and argv[0] == "loop":
-        parser = argparse.ArgumentParser(prog="plot_scan.py loop",
+    elif argv and argv[0] in ("loop", "rig-loop"):
+        parser = argparse.ArgumentParser(prog="plot_scan.py " + argv[0],
                                          description="Friction hysteresis loop.")
         parser.add_argument("csv", help="CSV: time,slidingSpeed,frictionForce,contactTemperature")
         parser.add_argument("--out", required=True, help="PNG file to write")
@@ -133,6 +144,8 @@ def main(argv):
             paths = plot_compare(args.dir_a, args.dir_b, args.out)
         elif command == "loop":
             paths = plot_loop(args.csv, args.out, args.title)
+        elif command == "rig-loop":
+            paths = plot_rig_loop(args.csv, args.out, args.title)
         else:
             paths = plot_scan(args.dir)
     except ScanError as error:
