@@ -66,10 +66,10 @@ std::string discoverHelp()
 
 Compares a measured dataset (format rosin-measurements/1) with Rosin's baseline model, simulated trial by
 trial with the nominal settings through the dataset's sensor high-pass; finds where they disagree
-(features: staticFriction, jump, creep, firstSlipTime, transientPeriods, pitchCents, each normalised by the
-measurement's own scatter), fits each effect of the catalog on a training half (checkerboard over the grid)
-and adopts the one that removes the most held-out gap if significant (paired sign-flip test at 1 %,
-Bonferroni over the candidates, and a gain of at least 20 %); at most three effects.
+(features: staticFriction, jump, creep, firstSlipTime, transientPeriods, pitchCents, harmonicTilt, each
+normalised by the measurement's own scatter), fits each effect of the catalog on a training half
+(checkerboard over the grid) and adopts the one that removes the most held-out gap if significant (paired
+sign-flip test at 1 %, Bonferroni over the candidates, and a gain of at least 20 %); at most three effects.
 
 options:
   --json FILE          the result (gap before/after per feature, steps, status)

@@ -1,66 +1,44 @@
-// `rosin discover` through the built binary on small datasets made in the test by `rosin synth-data` (6 x 6
-// Guettler grid at one beta, 0.3 s trials); the only channel between generator and workflow is the dataset
-// folder. A hidden junction growth (or sticking creep) is named first and most of the gap goes; a dataset
-// with nothing hidden names nothing; a malformed dataset is refused with a message naming the file and field.
+// `rosin discover` through the built binary on small datasets made in the test by `rosin synth-data` (8 x 8
+// Guettler grids of 0.4 s trials at beta 0.0899, issue 5's suggested size); the only channel between
+// generator and workflow is the dataset folder. For each of the six effects of the catalog, hidden alone, the
+// effect is named first and at least half of the gap goes; two hidden effects are both named; a dataset with
+// nothing hidden names nothing; a malformed dataset is refused with a message naming the file and field.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-#include <sys/wait.h>
 
 #include <nlohmann/json.hpp>
 
+#include "CliSupport.h"
 #include "config/TempFiles.h"
 
 namespace
 {
 namespace fs = std::filesystem;
-
-struct Result
-{
-    int status = -1;
-    std::string out, err;
-};
-
-std::string quote(const std::string& arg)
-{
-    std::string q = "'";
-    for (char c : arg)
-        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-std::string slurp(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using rosin::test::cli::Result;
+using rosin::test::cli::slurp;
 
 class DiscoverCli : public ::testing::Test
 {
   protected:
     Result rosin(const std::vector<std::string>& args)
     {
-        std::string command = "cd " + quote(dir.path()) +
-                              " && ROSIN_PRESET_DIR=" + quote(ROSIN_SOURCE_PRESET_DIR) + " " +
-                              quote(ROSIN_BINARY);
-        for (const auto& a : args)
-            command += " " + quote(a);
-        command += " >" + quote(dir.path() + "/stdout.txt") + " 2>" + quote(dir.path() + "/stderr.txt");
-        const int raw = std::system(command.c_str());
-        return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir.path() + "/stdout.txt"),
-                slurp(dir.path() + "/stderr.txt")};
+        return rosin::test::cli::runRosin(dir.path(), args);
     }
-    // A 6 x 6 Guettler dataset of 0.3 s trials at beta 0.0899 with `effect` hidden.
-    void makeDataset(const std::string& effect, const std::string& seed, const std::string& out)
+    // A Guettler dataset at issue 5's test size with `effects` hidden (extra options after them).
+    void makeDataset(const std::vector<std::string>& effects, const std::string& seed, const std::string& out,
+                     const std::vector<std::string>& extra = {"--beta", "0.0899"})
     {
-        const Result r =
-            rosin({"synth-data", "--effect", effect, "--scan", "guettler", "--grid", "6", "--beta", "0.0899",
-                   "--duration", "0.3", "--seed", seed, "--threads", "2", "--out", out});
+        std::vector<std::string> args{"synth-data"};
+        for (const auto& e : effects)
+            args.insert(args.end(), {"--effect", e});
+        args.insert(args.end(), {"--scan", "guettler", "--grid", "8", "--duration", "0.4", "--seed", seed,
+                                 "--threads", "2", "--out", out});
+        args.insert(args.end(), extra.begin(), extra.end());
+        const Result r = rosin(args);
         ASSERT_EQ(r.status, 0) << r.err;
     }
     nlohmann::json discover(const std::string& dataset)
@@ -69,6 +47,7 @@ class DiscoverCli : public ::testing::Test
                                 dataset + "-report", "--threads", "2"});
         EXPECT_EQ(r.status, 0) << r.err;
         EXPECT_TRUE(fs::exists(path(dataset + "-report/report.md")));
+        std::printf("[ figures  ] %s\n", r.out.c_str());
         return nlohmann::json::parse(slurp(path(dataset + ".json")));
     }
     std::string path(const std::string& name) const { return dir.path() + "/" + name; }
@@ -76,42 +55,96 @@ class DiscoverCli : public ::testing::Test
     rosin::test::TempDir dir;
 };
 
-TEST_F(DiscoverCli, HiddenJunctionGrowthIsNamedFirstAndHalvesTheGap)
+// One hidden effect: named first, significant on the held-out half, and the gap at least halved.
+struct HiddenEffect
 {
-    makeDataset("junction-growth:growth=0.3,onsetTime=0.003", "3", "jg");
-    const auto j = discover("jg");
+    std::string name, spec, seed;
+    std::vector<std::string> extra{"--beta", "0.0899"};
+    std::string parameter{}; ///< non-empty: its fitted value must lie within a factor 1.5 of the hidden one
+    double hidden = 0.0;
+};
+
+class DiscoverHiddenEffect : public DiscoverCli, public ::testing::WithParamInterface<HiddenEffect>
+{
+};
+
+TEST_P(DiscoverHiddenEffect, IsNamedFirstAndAtLeastHalvesTheGap)
+{
+    const HiddenEffect& h = GetParam();
+    makeDataset({h.spec}, h.seed, "d", h.extra);
+    const auto j = discover("d");
     EXPECT_EQ(j["status"], "effect-found");
     ASSERT_FALSE(j["steps"].empty());
-    EXPECT_EQ(j["steps"][0]["effect"], "junction-growth");
-    EXPECT_GT(j["gapBefore"].get<double>(), 1.0);
+    EXPECT_EQ(j["steps"][0]["effect"], h.name);
+    EXPECT_GT(j["gapBefore"].get<double>(), 0.1);
     EXPECT_LE(j["gapAfter"].get<double>(), 0.5 * j["gapBefore"].get<double>());
-    EXPECT_EQ(j["trialsUsed"].get<int>() + j["trialsSkipped"].get<int>(), 36);
-    EXPECT_GE(j["trialsSkipped"].get<int>(), 1);
-    EXPECT_LT(j["steps"][0]["pValue"].get<double>(), 0.01);
+    EXPECT_LT(j["steps"][0]["pValue"].get<double>(), j["steps"][0]["alpha"].get<double>());
     EXPECT_GE(j["steps"][0]["heldOutGain"].get<double>(), 0.2);
+    EXPECT_GE(j["trialsSkipped"].get<int>(), 1);
+    if (!h.parameter.empty())
+    {
+        const double fitted = j["steps"][0]["parameters"][h.parameter].get<double>();
+        EXPECT_GT(fitted, h.hidden / 1.5) << h.parameter;
+        EXPECT_LT(fitted, h.hidden * 1.5) << h.parameter;
+    }
 }
 
-TEST_F(DiscoverCli, HiddenStickingCreepIsNamedFirstAndHalvesTheGap)
+// String losses show in the corners of Helmholtz motion (harmonicTilt), so their dataset scans where the
+// string speaks, as a laboratory studying damping would: forces 0.4-2.4 N, accelerations 0.1-1.2 m/s^2, two
+// bow positions. Over the full grid most cells never reach Helmholtz motion in 0.4 s.
+INSTANTIATE_TEST_SUITE_P(
+    EveryEffect, DiscoverHiddenEffect,
+    ::testing::Values(HiddenEffect{"junction-growth", "junction-growth:growth=0.3,onsetTime=0.003", "3"},
+                      HiddenEffect{"breakaway-jump", "breakaway-jump:jumpCurve=rod", "6"},
+                      HiddenEffect{"hertz-contact", "hertz-contact", "8"},
+                      HiddenEffect{"sticking-creep",
+                                   "sticking-creep:creepResistance=60",
+                                   "5",
+                                   {"--beta", "0.0899"},
+                                   "creepResistance",
+                                   60.0},
+                      HiddenEffect{"extra-string-damping",
+                                   "extra-string-damping:lossScale=3",
+                                   "7",
+                                   {"--beta", "0.0899,0.1428", "--force-range", "0.4:2.4",
+                                    "--acceleration-range", "0.1:1.2"},
+                                   "lossScale",
+                                   3.0},
+                      HiddenEffect{"ambient-temperature",
+                                   "ambient-temperature:ambientOffset=12",
+                                   "9",
+                                   {"--beta", "0.0899"},
+                                   "ambientOffset",
+                                   12.0}),
+    [](const auto& info)
+    {
+        std::string name = info.param.name;
+        name.erase(std::remove(name.begin(), name.end(), '-'), name.end());
+        return name;
+    });
+
+TEST_F(DiscoverCli, TwoHiddenEffectsAreBothNamed)
 {
-    makeDataset("sticking-creep:creepResistance=60", "5", "sc");
-    const auto j = discover("sc");
+    makeDataset({"sticking-creep:creepResistance=60", "hertz-contact"}, "10", "two");
+    const auto j = discover("two");
     EXPECT_EQ(j["status"], "effect-found");
-    ASSERT_FALSE(j["steps"].empty());
-    EXPECT_EQ(j["steps"][0]["effect"], "sticking-creep");
+    ASSERT_GE(j["steps"].size(), 2u);
+    std::vector<std::string> named;
+    for (const auto& step : j["steps"])
+        named.push_back(step["effect"]);
+    EXPECT_NE(std::find(named.begin(), named.end(), "sticking-creep"), named.end());
+    EXPECT_NE(std::find(named.begin(), named.end(), "hertz-contact"), named.end());
     EXPECT_LE(j["gapAfter"].get<double>(), 0.5 * j["gapBefore"].get<double>());
-    // The fitted dashpot is the hidden one within a factor 1.5.
-    const double eta = j["steps"][0]["parameters"]["creepResistance"].get<double>();
-    EXPECT_GT(eta, 40.0);
-    EXPECT_LT(eta, 90.0);
 }
 
 TEST_F(DiscoverCli, NothingHiddenNamesNothing)
 {
-    makeDataset("none", "4", "none");
+    makeDataset({"none"}, "4", "none");
     const auto j = discover("none");
     EXPECT_EQ(j["status"], "no-significant-discrepancy");
     EXPECT_TRUE(j["steps"].empty());
     EXPECT_NEAR(j["gapAfter"].get<double>(), j["gapBefore"].get<double>(), 1e-12);
+    EXPECT_GT(j["remainingGap"]["pValue"].get<double>(), 0.01);
 }
 
 TEST_F(DiscoverCli, MalformedDatasetIsRefusedWithFileAndField)
@@ -128,6 +161,24 @@ TEST_F(DiscoverCli, MalformedDatasetIsRefusedWithFileAndField)
     EXPECT_NE(r.err.find("dataset.json"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("sampleRate"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(path("bad.json")));
+}
+
+TEST_F(DiscoverCli, TruncatedTrialFileIsRefusedWithItsName)
+{
+    const Result made = rosin({"synth-data", "--effect", "none", "--scan", "guettler", "--grid", "3",
+                               "--duration", "0.1", "--seed", "1", "--threads", "2", "--out", "cut"});
+    ASSERT_EQ(made.status, 0) << made.err;
+    const auto d = nlohmann::json::parse(slurp(path("cut/dataset.json")));
+    std::string file;
+    for (const auto& t : d["trials"])
+        if (t.value("valid", true))
+            file = t["file"];
+    ASSERT_FALSE(file.empty());
+    fs::resize_file(path("cut/" + file), fs::file_size(path("cut/" + file)) / 2);
+    const Result r = rosin({"discover", "cut", "--json", "cut.json", "--report", "cut-report"});
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(path("cut.json")));
 }
 
 TEST_F(DiscoverCli, MissingDatasetArgumentIsAUsageError)

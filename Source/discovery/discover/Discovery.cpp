@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "ModelRuns.h"
+#include "ModelSensitivity.h"
 
 namespace rosin::discovery
 {
@@ -27,6 +28,7 @@ Discovery runDiscovery(const Dataset& dataset, std::vector<TrialFeatures> measur
 
     const SimulationModel base = baselineModel(dataset, settings.baseline);
     d.baseline = simulateFeatures(base, dataset, d.used, seconds, settings.threads);
+    addModelSensitivity(d.scatter, base, dataset, d.used, d.baseline, seconds, settings.threads);
     d.gapBefore = measureGap(d.used, d.measured, d.baseline, d.scatter);
     for (std::size_t f = 0; f < kFeatureCount; ++f)
         d.whereBefore[f] = whereLargest(f, dataset, d.grid, d.used, d.measured, d.baseline, d.scatter);
@@ -56,7 +58,10 @@ Discovery runDiscovery(const Dataset& dataset, std::vector<TrialFeatures> measur
     d.gapAfter = measureGap(d.used, d.measured, d.final, d.scatter);
     for (std::size_t f = 0; f < kFeatureCount; ++f)
         d.whereAfter[f] = whereLargest(f, dataset, d.grid, d.used, d.measured, d.final, d.scatter);
-    d.status = d.search.steps.empty() ? "no-significant-discrepancy" : "effect-found";
+    d.remaining = gapSignificance(d.gapAfter);
+    d.status = !d.search.steps.empty()                   ? "effect-found"
+               : d.remaining.pValue < kSignificanceLevel ? "unexplained"
+                                                         : "no-significant-discrepancy";
     d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return d;
 }

@@ -39,7 +39,10 @@ struct Discovery
     std::array<std::string, kFeatureCount> whereBefore, whereAfter;
     SearchResult search;
     std::vector<GapSummary> stepGaps; ///< over all used trials after each adopted effect
-    std::string status;               ///< "effect-found" | "no-significant-discrepancy"
+    GapSignificance remaining;        ///< of the gap left after the adopted effects (gapAfter)
+    /// "effect-found" (an effect adopted), "unexplained" (none adopted, yet the gap is significant: p <
+    /// kSignificanceLevel) or "no-significant-discrepancy".
+    std::string status;
     double seconds = 0.0;
 };
 

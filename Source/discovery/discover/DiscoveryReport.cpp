@@ -89,6 +89,10 @@ nlohmann::json discoveryJson(const Discovery& d, const Dataset& dataset)
     if (!d.search.lastTried.empty())
         j["notAdopted"] = tried(d.search.lastTried);
     j["gapAfter"] = d.gapAfter.overall;
+    j["remainingGap"] = {
+        {"pValue", d.remaining.pValue},
+        {"feature", d.remaining.feature < kFeatureCount ? featureName(d.remaining.feature) : ""},
+        {"test", "chi-square of sum z^2 per feature, Bonferroni over features"}};
     j["status"] = d.status;
     j["verdict"] = d.status;
     j["split"] = {{"training", d.training.size()}, {"heldOut", d.heldOut.size()}, {"rule", "checkerboard"}};
@@ -144,6 +148,17 @@ std::string discoveryMarkdown(const Discovery& d, const Dataset& dataset,
         m += "No effect of the catalog reduced the held-out gap significantly (paired sign-flip test at 1 % "
              "with a Bonferroni correction over the candidates, and a held-out gain of at least 20 %); no "
              "effect is named.\n\n";
+    if (d.status == "effect-found" && d.remaining.pValue < kSignificanceLevel)
+        m += "A significant gap remains after the adopted effects (" +
+             std::string(featureName(d.remaining.feature)) +
+             ": chi-square test p = " + number(d.remaining.pValue) +
+             "): what is left is not explained by the catalog.\n\n";
+    if (d.status == "unexplained")
+        m += "Yet the model disagrees with the measurement by more than its scatter explains (" +
+             std::string(featureName(d.remaining.feature)) +
+             ": chi-square test p = " + number(d.remaining.pValue) +
+             "): the missing physics is outside the catalog, or several effects act together that no "
+             "single one explains alone.\n\n";
     m += "## What disagrees, and where\n\n| feature | scatter (method) | trials | gap before | gap after | "
          "largest before |\n|---|---|---|---|---|---|\n";
     for (std::size_t f = 0; f < kFeatureCount; ++f)

@@ -165,18 +165,16 @@ EffectScore score(const SearchInputs& in, const SimulationModel& current,
     const auto sim = simulateFeatures(m, *in.dataset, in.heldOut, in.seconds, in.threads);
     s.heldOutBefore = measureGap(in.heldOut, in.measured, currentHeldOut, in.scatter);
     s.heldOutAfter = measureGap(in.heldOut, in.measured, sim, in.scatter);
+    const auto e0 = objectiveShares(in.heldOut, in.measured, currentHeldOut, in.scatter);
+    const auto e1 = objectiveShares(in.heldOut, in.measured, sim, in.scatter);
     std::vector<double> d;
     double before = 0.0, after = 0.0;
-    for (std::size_t t : in.heldOut)
+    for (std::size_t i = 0; i < e0.size(); ++i)
     {
-        const auto e0 = trialError(in.measured[t], currentHeldOut[t], in.scatter);
-        const auto e1 = trialError(in.measured[t], sim[t], in.scatter);
-        if (!e0 && !e1)
-            continue;
-        const double a = e0.value_or(0.0), b = e1.value_or(0.0);
-        before += a;
-        after += b;
-        d.push_back(a - b);
+        before += e0[i];
+        after += e1[i];
+        if (e0[i] != 0.0 || e1[i] != 0.0)
+            d.push_back(e0[i] - e1[i]);
     }
     s.heldOutGain = before > 0.0 ? 1.0 - after / before : 0.0;
     s.pValue = signFlipTest(d, in.seed + effectIndex(effect)).pValue;

@@ -10,7 +10,8 @@
 //          objective is the training trials' mean z^2 averaged over features (GapSummary::objective). Each
 //          evaluation simulates the training trials.
 //   Score: held-out gain = 1 - sum e_i(with effect) / sum e_i(current model) over the held-out trials,
-//          e_i a trial's mean z^2. Significant when the paired sign-flip test gives p < 0.01 / (effects
+//          e_i a trial's share of the objective (objectiveShares), so the gain is the held-out objective's
+//          relative fall. Significant when the paired sign-flip test gives p < 0.01 / (effects
 //          tried) (Bonferroni over the candidates) AND the gain is at least 20 %.
 //   Stop:  after three effects, when no candidate is significant, or when the held-out gap of the model with
 //          the adopted effects is 0 (within the measurement's scatter on every feature).

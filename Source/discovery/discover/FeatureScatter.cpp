@@ -143,4 +143,12 @@ FeatureScatter measureScatter(const ScanGrid& grid, const std::vector<TrialFeatu
     return s;
 }
 
+double FeatureScatter::trialSigma(std::size_t trial, std::size_t feature) const noexcept
+{
+    if (trial >= sensitivity.size())
+        return sigma[feature];
+    const double s = sensitivity[trial][feature];
+    return std::sqrt(sigma[feature] * sigma[feature] + s * s);
+}
+
 } // namespace rosin::discovery

@@ -25,6 +25,14 @@ struct FeatureScatter
 {
     std::array<double, kFeatureCount> sigma{};
     std::array<std::string, kFeatureCount> method{}; ///< "repeats", "neighbours", "spread", "resolution"
+    /// Per trial (indexed like dataset.trials; empty: none), how far the model's feature moves when the
+    /// trial's settings are nudged within a bowing machine's accuracy (ModelSensitivity.h); NaN where the
+    /// feature appears or vanishes under the nudge.
+    std::vector<std::array<double, kFeatureCount>> sensitivity{};
+
+    /// The sigma of feature f in trial t: sqrt(sigma_f^2 + sensitivity^2), or NaN when the trial's feature
+    /// is unstable under the nudge (then it is not compared).
+    double trialSigma(std::size_t trial, std::size_t feature) const noexcept;
 };
 
 /// `measured` is indexed like dataset.trials.

@@ -1,16 +1,19 @@
 #include "GapMeasure.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 namespace rosin::discovery
 {
 
-std::optional<double> normalisedDifference(const std::optional<double>& measured,
+std::optional<double> normalisedDifference(std::size_t feature, const std::optional<double>& measured,
                                            const std::optional<double>& simulated, double sigma)
 {
+    if (std::isnan(sigma) || ((!measured || !simulated) && describesHelmholtzMotion(feature)))
+        return std::nullopt;
     if (measured && simulated)
-        return (*measured - *simulated) / sigma;
+        return std::clamp((*measured - *simulated) / sigma, -kMissingZ, kMissingZ);
     if (measured)
         return kMissingZ;
     if (simulated)
@@ -24,7 +27,7 @@ GapSummary measureGap(const std::vector<std::size_t>& trials, const std::vector<
     GapSummary g;
     for (std::size_t t : trials)
         for (std::size_t f = 0; f < kFeatureCount; ++f)
-            if (auto z = normalisedDifference(measured[t][f], simulated[t][f], scatter.sigma[f]))
+            if (auto z = normalisedDifference(f, measured[t][f], simulated[t][f], scatter.trialSigma(t, f)))
             {
                 g.meanSquare[f] += *z * *z;
                 ++g.count[f];
@@ -50,18 +53,52 @@ GapSummary measureGap(const std::vector<std::size_t>& trials, const std::vector<
     return g;
 }
 
-std::optional<double> trialError(const TrialFeatures& measured, const TrialFeatures& simulated,
-                                 const FeatureScatter& scatter)
+std::vector<double> objectiveShares(const std::vector<std::size_t>& trials,
+                                    const std::vector<TrialFeatures>& measured,
+                                    const std::vector<TrialFeatures>& simulated,
+                                    const FeatureScatter& scatter)
 {
-    double sum = 0.0;
-    int n = 0;
+    const GapSummary g = measureGap(trials, measured, simulated, scatter);
+    std::size_t used = 0;
     for (std::size_t f = 0; f < kFeatureCount; ++f)
-        if (auto z = normalisedDifference(measured[f], simulated[f], scatter.sigma[f]))
+        used += g.count[f] >= kMinTrialsForGap ? 1 : 0;
+    std::vector<double> shares(trials.size(), 0.0);
+    if (used == 0)
+        return shares;
+    for (std::size_t i = 0; i < trials.size(); ++i)
+        for (std::size_t f = 0; f < kFeatureCount; ++f)
         {
-            sum += *z * *z;
-            ++n;
+            if (g.count[f] < kMinTrialsForGap)
+                continue;
+            const std::size_t t = trials[i];
+            if (auto z = normalisedDifference(f, measured[t][f], simulated[t][f], scatter.trialSigma(t, f)))
+                shares[i] += *z * *z / static_cast<double>(g.count[f] * used);
         }
-    return n > 0 ? std::optional<double>(sum / n) : std::nullopt;
+    return shares;
+}
+
+GapSignificance gapSignificance(const GapSummary& gap)
+{
+    GapSignificance g;
+    std::size_t tested = 0;
+    for (std::size_t f = 0; f < kFeatureCount; ++f)
+    {
+        if (gap.count[f] < kMinTrialsForGap)
+            continue;
+        ++tested;
+        const double n = static_cast<double>(gap.count[f]);
+        const double x = gap.meanSquare[f] * n;
+        const double spread = 2.0 / (9.0 * n);
+        const double normal = (std::cbrt(x / n) - (1.0 - spread)) / std::sqrt(spread);
+        const double p = 0.5 * std::erfc(normal / std::sqrt(2.0));
+        if (p < g.pValue)
+        {
+            g.pValue = p;
+            g.feature = f;
+        }
+    }
+    g.pValue = std::min(1.0, g.pValue * static_cast<double>(std::max<std::size_t>(tested, 1)));
+    return g;
 }
 
 namespace
@@ -105,8 +142,8 @@ std::string whereLargest(std::size_t feature, const Dataset& dataset, const Scan
     {
         if (cellOf[t] < 0)
             continue;
-        if (auto z =
-                normalisedDifference(measured[t][feature], simulated[t][feature], scatter.sigma[feature]))
+        if (auto z = normalisedDifference(feature, measured[t][feature], simulated[t][feature],
+                                          scatter.trialSigma(t, feature)))
         {
             sumSq[cellOf[t]] += *z * *z;
             sum[cellOf[t]] += *z;

@@ -1,11 +1,17 @@
 #pragma once
 // The gap between measured and simulated features, in units of the measurement's scatter.
-//   z = (measured - simulated) / sigma per trial and feature; a feature that one side shows and the other
-//   does not (a slip in one, none in the other) counts as z = +-3 (kMissingZ).
+//   z = (measured - simulated) / sigma per trial and feature (FeatureScatter::trialSigma: the measurement's
+//   scatter and the model's sensitivity to the trial's settings), clipped to +-3 (kMissingZ); a feature that
+//   one side shows and the other does not (a slip in one, none in the other) counts as z = +-3 too. Beyond
+//   three sigma a trial disagrees qualitatively, however far: a transient of 14 periods against one of 5 (a
+//   chaotic attack, where 1 % more force changes the outcome) must not outweigh twenty trials that each
+//   disagree by two sigma the same way. Features that describe established Helmholtz motion (pitch, harmonic
+//   tilt) are compared only where both sides show it: whether the motion was reached is the transient's
+//   and the regime's evidence, and counting it again would weigh a chaotic boundary twice.
 //   Per feature: the excess rms  gap = sqrt(max(0, mean(z^2) - 1)) over the trials where either side has
 //   the feature: 0 means the model agrees within the measurement's scatter, 1 that the disagreement is as
 //   large again as the scatter. Overall gap: the mean over features present in at least 3 trials.
-//   A trial's error (for the paired test): the mean z^2 over its features.
+//   A trial's error (for the paired test): its share of the objective (objectiveShares).
 // JUCE-free.
 #include <array>
 #include <cstddef>
@@ -24,7 +30,9 @@ namespace rosin::discovery
 inline constexpr double kMissingZ = 3.0;
 inline constexpr std::size_t kMinTrialsForGap = 3;
 
-std::optional<double> normalisedDifference(const std::optional<double>& measured,
+/// z of one feature of one trial, or nullopt when it is not compared (absent on both sides, a property of
+/// Helmholtz motion absent on one side (see describesHelmholtzMotion), or sigma NaN: unstable in the model).
+std::optional<double> normalisedDifference(std::size_t feature, const std::optional<double>& measured,
                                            const std::optional<double>& simulated, double sigma);
 
 struct GapSummary
@@ -41,9 +49,25 @@ struct GapSummary
 GapSummary measureGap(const std::vector<std::size_t>& trials, const std::vector<TrialFeatures>& measured,
                       const std::vector<TrialFeatures>& simulated, const FeatureScatter& scatter);
 
-/// The trial's mean z^2 over its features, or nullopt if neither side has any.
-std::optional<double> trialError(const TrialFeatures& measured, const TrialFeatures& simulated,
-                                 const FeatureScatter& scatter);
+/// Each trial's share of GapSummary::objective over `trials` (same order; they sum to the objective): its
+/// z^2 of every counted feature divided by that feature's trial count and by the number of features. The
+/// paired test compares these, so a feature seen in few trials (the tilt of established Helmholtz motion)
+/// weighs as much in the test as in the gap, not as little as its trials are few.
+std::vector<double> objectiveShares(const std::vector<std::size_t>& trials,
+                                    const std::vector<TrialFeatures>& measured,
+                                    const std::vector<TrialFeatures>& simulated,
+                                    const FeatureScatter& scatter);
+
+/// Whether a gap is more than the measurement's scatter explains: per feature with at least
+/// kMinTrialsForGap trials, sum z^2 over its n trials against chi-square with n degrees of freedom (z is
+/// N(0, 1) when the model is right; the clip at 3 only lowers the sum), upper tail by the Wilson-Hilferty
+/// cube-root approximation; the smallest p, Bonferroni-corrected over the features tested.
+struct GapSignificance
+{
+    double pValue = 1.0;
+    std::size_t feature = kFeatureCount; ///< the feature that gave the smallest p (kFeatureCount: none)
+};
+GapSignificance gapSignificance(const GapSummary& gap);
 
 /// Where on the grid a feature's z^2 is largest: each axis with more than one value split at its middle,
 /// the region (of 2 to 8) with the largest mean z^2, as text ("force 0.4-1.5 N, acceleration 0.08-1.1

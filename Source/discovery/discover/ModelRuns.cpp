@@ -37,16 +37,29 @@ SimulationModel baselineModel(const Dataset& dataset, const std::string& frictio
     return model;
 }
 
+namespace
+{
+Gesture nudged(Gesture gesture, double factor)
+{
+    if (auto* a = std::get_if<ConstantAcceleration>(&gesture))
+        a->acceleration *= factor;
+    else if (auto* v = std::get_if<Steady>(&gesture))
+        v->speed *= factor;
+    return gesture;
+}
+} // namespace
+
 std::vector<TrialFeatures> simulateFeatures(const SimulationModel& model, const Dataset& dataset,
                                             const std::vector<std::size_t>& trials,
-                                            const std::vector<double>& seconds, unsigned threads)
+                                            const std::vector<double>& seconds, unsigned threads,
+                                            SettingsNudge nudge)
 {
     std::vector<TrialFeatures> out(dataset.trials.size());
-    auto makeWorker = [&model, &dataset, &seconds]() -> std::function<TrialFeatures(std::size_t)>
+    auto makeWorker = [&model, &dataset, &seconds, nudge]() -> std::function<TrialFeatures(std::size_t)>
     {
         // One simulator per ambient temperature (usually one): preparing a thermal law calibrates it.
         auto simulators = std::make_shared<std::map<double, std::unique_ptr<TrialSimulator>>>();
-        return [simulators, &model, &dataset, &seconds](std::size_t i)
+        return [simulators, &model, &dataset, &seconds, nudge](std::size_t i)
         {
             const Trial& trial = dataset.trials[i];
             const double ambient = dataset.ambientTemperature(trial).value_or(kCalibrationAmbient);
@@ -59,8 +72,8 @@ std::vector<TrialFeatures> simulateFeatures(const SimulationModel& model, const 
             }
             TrialSettings s;
             s.beta = trial.beta;
-            s.bowForce = trial.bowForce;
-            s.gesture = trial.gesture;
+            s.bowForce = trial.bowForce * nudge.bowForce;
+            s.gesture = nudged(trial.gesture, nudge.motion);
             s.seconds = seconds[i];
             std::vector<double> force = channelSamples(sim->run(s), "bridgeForce");
             if (dataset.sensor.highpassHz && *dataset.sensor.highpassHz > 0.0)

@@ -23,10 +23,18 @@ inline constexpr double kCalibrationAmbient = 20.0;
 /// std::invalid_argument if `friction` is not a friction law name.
 SimulationModel baselineModel(const Dataset& dataset, const std::string& friction);
 
+/// Factors on a trial's nominal settings (ModelSensitivity nudges them; 1 = as recorded).
+struct SettingsNudge
+{
+    double bowForce = 1.0;
+    double motion = 1.0; ///< the acceleration of a constant-acceleration gesture, the speed of a steady one
+};
+
 /// Features of the dataset's trials `trials` (indices into dataset.trials) simulated with `model`;
 /// `seconds[i]` is trial i's length. Results are indexed like dataset.trials (others left empty).
 std::vector<TrialFeatures> simulateFeatures(const SimulationModel& model, const Dataset& dataset,
                                             const std::vector<std::size_t>& trials,
-                                            const std::vector<double>& seconds, unsigned threads);
+                                            const std::vector<double>& seconds, unsigned threads,
+                                            SettingsNudge nudge = {});
 
 } // namespace rosin::discovery

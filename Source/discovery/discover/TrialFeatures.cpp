@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "lab/FirstSlip.h"
+#include "lab/HarmonicTilt.h"
 #include "lab/RegimeClassifier.h"
 #include "lab/SlipOnsets.h"
 #include "lab/TransientLength.h"
@@ -16,6 +17,16 @@ namespace
 constexpr double kTransientCap = 20.0;
 constexpr double kCreepPoint = 0.6;   ///< read the rise at this share of t1
 constexpr double kCreepWindow = 0.05; ///< averaged over +- this share of t1
+constexpr double kTiltShare = 0.4;    ///< harmonic tilt over the last 40 % of a trial
+constexpr double kTiltSettle = 2.0;   ///< periods after t_H before the tilt is read
+
+std::optional<double> tilt(const std::vector<double>& force, std::size_t from, const FeatureContext& c)
+{
+    lab::HarmonicTiltOptions o;
+    o.sampleRate = c.sampleRate;
+    o.fundamentalHz = 1.0 / c.periodSeconds;
+    return lab::harmonicTiltDb(force, from, force.size(), o);
+}
 
 std::optional<double> creepIndex(const std::vector<double>& force, const lab::FirstSlip& slip,
                                  const FeatureContext& c)
@@ -39,13 +50,13 @@ std::optional<double> creepIndex(const std::vector<double>& force, const lab::Fi
 const char* featureName(std::size_t feature) noexcept
 {
     static const char* const names[kFeatureCount] = {
-        "staticFriction", "jump", "creep", "firstSlipTime", "transientPeriods", "pitchCents"};
+        "staticFriction", "jump", "creep", "firstSlipTime", "transientPeriods", "pitchCents", "harmonicTilt"};
     return feature < kFeatureCount ? names[feature] : "?";
 }
 
 const char* featureUnit(std::size_t feature) noexcept
 {
-    static const char* const units[kFeatureCount] = {"", "", "", "s", "periods", "cents"};
+    static const char* const units[kFeatureCount] = {"", "", "", "s", "periods", "cents", "dB"};
     return feature < kFeatureCount ? units[feature] : "";
 }
 
@@ -62,9 +73,16 @@ double featureResolution(std::size_t feature, double sampleRate) noexcept
         return std::max(1e-4, 2.0 / sampleRate);
     case kTransientPeriods:
         return 0.5;
+    case kHarmonicTilt:
+        return 0.2;
     default:
         return 1.0;
     }
+}
+
+bool describesHelmholtzMotion(std::size_t feature) noexcept
+{
+    return feature == kPitchCents || feature == kHarmonicTilt;
 }
 
 FeatureContext featureContext(const Dataset& dataset, const Trial& trial)
@@ -108,6 +126,12 @@ TrialFeatures computeTrialFeatures(const std::vector<double>& force, const Featu
             const lab::TransientLength tr = lab::measureTransient(onsets, periodSamples, t);
             if (tr.slipped && (tr.periods || !tr.insufficientData))
                 f[kTransientPeriods] = std::min(tr.periods.value_or(kTransientCap), kTransientCap);
+            if (tr.helmholtzStart)
+            {
+                const double settled = static_cast<double>(*tr.helmholtzStart) + kTiltSettle * periodSamples;
+                const double tail = (1.0 - kTiltShare) * static_cast<double>(force.size());
+                f[kHarmonicTilt] = tilt(force, static_cast<std::size_t>(std::max(settled, tail)), c);
+            }
         }
     }
     else if (std::holds_alternative<Steady>(c.gesture))
@@ -115,7 +139,10 @@ TrialFeatures computeTrialFeatures(const std::vector<double>& force, const Featu
         const lab::RegimeAnalysis r = lab::classifyFromBridgeForce(
             force, periodSamples, lab::AnalysisWindow{force.size() / 2, 0}, onsetOptions);
         if (r.regime == lab::Regime::Helmholtz)
+        {
             f[kPitchCents] = r.pitchCents;
+            f[kHarmonicTilt] = tilt(force, force.size() / 2, c);
+        }
     }
     return f;
 }

@@ -14,6 +14,11 @@
 //                    onsets), capped at 20 (the seed's "not reached" counts as 20)
 //   pitchCents       steady gestures in Helmholtz motion: 1200 log2(P / P_m) over the second half
 //                    (lab::classifyFromBridgeForce; the flattening of the Helmholtz period)
+//   harmonicTilt     in established Helmholtz motion (the last 40 % of the trial, after t_H + 2 P; the
+//                    second half of a steady one): harmonics 25-60 against 1-4 of the bridge force, dB
+//                    (lab::harmonicTiltDb): how round the Helmholtz corner is, i.e. the string's losses
+//                    against the friction's sharpening. (Read in any regime, it is as chaotic as the regime
+//                    and hides the losses: tried and dropped.)
 // JUCE-free.
 #include <array>
 #include <cstddef>
@@ -34,6 +39,7 @@ enum Feature : std::size_t
     kFirstSlipTime,
     kTransientPeriods,
     kPitchCents,
+    kHarmonicTilt,
     kFeatureCount
 };
 
@@ -42,8 +48,12 @@ const char* featureName(std::size_t feature) noexcept;
 /// The unit of a feature, for reports ("" dimensionless).
 const char* featureUnit(std::size_t feature) noexcept;
 /// The smallest scatter a feature is credited with (its resolution), so a quantised or noise-free feature
-/// does not divide by zero: 0.002 (mu_s, jump), 0.005 (creep), 0.1 ms, 0.5 periods, 1 cent.
+/// does not divide by zero: 0.002 (mu_s, jump), 0.005 (creep), 0.1 ms, 0.5 periods, 1 cent,
+/// 0.2 dB.
 double featureResolution(std::size_t feature, double sampleRate) noexcept;
+
+/// True for the features measured only in established Helmholtz motion (pitchCents, harmonicTilt).
+bool describesHelmholtzMotion(std::size_t feature) noexcept;
 
 using TrialFeatures = std::array<std::optional<double>, kFeatureCount>;
 

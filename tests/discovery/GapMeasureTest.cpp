@@ -1,0 +1,101 @@
+// The gap's arithmetic: z is clipped at 3 like a one-sided feature, the paired test's per-trial shares add
+// up to the fitted objective, the chi-square test of a gap meets the table's quantile, and a model's
+// sensitivity to its settings marks features that flip as not comparable.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "discovery/discover/GapMeasure.h"
+#include "discovery/discover/ModelSensitivity.h"
+
+using namespace rosin::discovery;
+
+namespace
+{
+TrialFeatures withFeature(std::size_t f, double v)
+{
+    TrialFeatures t;
+    t[f] = v;
+    return t;
+}
+
+FeatureScatter unitScatter(std::size_t trials)
+{
+    FeatureScatter s;
+    s.sigma.fill(1.0);
+    s.sensitivity.assign(trials, {});
+    return s;
+}
+} // namespace
+
+TEST(GapMeasure, DifferencesBeyondThreeSigmaCountAsAQualitativeDisagreement)
+{
+    EXPECT_DOUBLE_EQ(*normalisedDifference(kJump, 10.0, 0.0, 1.0), kMissingZ);
+    EXPECT_DOUBLE_EQ(*normalisedDifference(kJump, 0.0, 10.0, 1.0), -kMissingZ);
+    EXPECT_DOUBLE_EQ(*normalisedDifference(kJump, 1.5, 0.5, 0.5), 2.0);
+    EXPECT_DOUBLE_EQ(*normalisedDifference(kJump, 1.0, std::nullopt, 1.0), kMissingZ);
+    // Helmholtz-motion features are compared only where both sides show them.
+    EXPECT_FALSE(normalisedDifference(kHarmonicTilt, -20.0, std::nullopt, 1.0));
+    EXPECT_FALSE(normalisedDifference(kJump, 1.0, 0.0, std::numeric_limits<double>::quiet_NaN()));
+}
+
+TEST(GapMeasure, TrialSharesAddUpToTheObjective)
+{
+    std::vector<TrialFeatures> measured, simulated;
+    std::vector<std::size_t> trials;
+    for (std::size_t t = 0; t < 12; ++t)
+    {
+        TrialFeatures m, s;
+        m[kJump] = 0.1 * t, s[kJump] = 0.0;
+        if (t % 3 == 0) // a rarer feature: its few trials carry as much weight as the common one's many
+            m[kHarmonicTilt] = -20.0, s[kHarmonicTilt] = -21.5;
+        measured.push_back(m), simulated.push_back(s), trials.push_back(t);
+    }
+    const auto scatter = unitScatter(12);
+    const auto g = measureGap(trials, measured, simulated, scatter);
+    const auto shares = objectiveShares(trials, measured, simulated, scatter);
+    double sum = 0.0;
+    for (double x : shares)
+        sum += x;
+    EXPECT_NEAR(sum, g.objective, 1e-12);
+    EXPECT_NEAR(g.meanSquare[kHarmonicTilt], 2.25, 1e-12);
+    EXPECT_NEAR(shares[3] - shares[1], 2.25 / 4 / 2 + (0.09 - 0.01) / 12 / 2, 1e-12);
+}
+
+TEST(GapMeasure, ChiSquareTestMeetsTheTableQuantile)
+{
+    // chi-square with 50 degrees of freedom: the 99th percentile is 76.154 (standard tables).
+    GapSummary g;
+    g.count[kJump] = 50;
+    g.meanSquare[kJump] = 76.154 / 50.0;
+    EXPECT_NEAR(gapSignificance(g).pValue, 0.01, 0.001);
+    EXPECT_EQ(gapSignificance(g).feature, kJump);
+    g.meanSquare[kJump] = 1.0; // what a right model gives
+    EXPECT_GT(gapSignificance(g).pValue, 0.4);
+    // Two features tested: Bonferroni doubles the smallest p.
+    g.meanSquare[kJump] = 76.154 / 50.0;
+    g.count[kCreep] = 50;
+    g.meanSquare[kCreep] = 1.0;
+    EXPECT_NEAR(gapSignificance(g).pValue, 0.02, 0.002);
+}
+
+TEST(ModelSensitivity, LargestDepartureOrNotComparableWhenAFeatureFlips)
+{
+    TrialFeatures nominal = withFeature(kTransientPeriods, 5.0);
+    nominal[kJump] = 0.2;
+    TrialFeatures up = withFeature(kTransientPeriods, 14.0);
+    up[kJump] = 0.21;
+    TrialFeatures down = withFeature(kJump, 0.17); // no Helmholtz motion at all
+    const auto s = featureSensitivity(nominal, {up, down});
+    EXPECT_NEAR(s[kJump], 0.03, 1e-12);
+    EXPECT_TRUE(std::isnan(s[kTransientPeriods]));
+    EXPECT_EQ(s[kCreep], 0.0);
+
+    FeatureScatter scatter = unitScatter(1);
+    scatter.sigma[kJump] = 0.04;
+    scatter.sensitivity[0] = s;
+    EXPECT_NEAR(scatter.trialSigma(0, kJump), 0.05, 1e-12);
+    EXPECT_TRUE(std::isnan(scatter.trialSigma(0, kTransientPeriods)));
+    EXPECT_EQ(scatter.trialSigma(5, kJump), 0.04); // no sensitivity known: the scatter alone
+}
