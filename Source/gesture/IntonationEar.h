@@ -4,7 +4,7 @@
 // stopped length of a stiff string sounds sharp of it; players hear the difference and move the finger. This
 // class does the same, one string at a time (JUCE-free, allocation-free, per sample):
 //   - it listens to the string's own flybacks (slip episodes in which the string moves backwards against the
-//     bow, |v - v_b| > |v_b|), as RegimeDetector does;
+//     bow, |v - v_b| > |v_b|), as lab::LiveRegimeMeter does;
 //   - each flyback looks back for the flyback one period earlier (within -15 %..+18 % of the nominal
 //     period): in Helmholtz motion the one before it, in double or multiple slipping the one in the same
 //     phase of the previous period, since those motions are periodic too and their pitch is heard as well;

@@ -30,7 +30,7 @@ std::vector<SlipEpisode> slipEpisodesFromState(const std::vector<bool>& sticking
 
 /// Episodes from a simulation's per-sample output: the runs of the solver's sticking flag, each marked a
 /// flyback if somewhere in it |v - v_b| > |v_b| (v the bow-point velocity), as HelmholtzMotionTest and the
-/// plugin's RegimeDetector count them.
+/// plugin's live meter (LiveRegimeMeter) count them.
 std::vector<SlipEpisode> slipEpisodesFromVoice(const std::vector<physics::VoiceSample>& samples);
 
 /// The bridge force and the sticking flag of a simulation's samples, as the force- and state-based

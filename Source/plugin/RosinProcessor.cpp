@@ -312,7 +312,13 @@ void RosinProcessor::publishTelemetry(const Engine& engine) noexcept
         const physics::BowInput& in = inputs_[k];
         const physics::VoiceSample& out = outputs_[k];
         StringReadout r;
-        detectors_[k].fillReadout(r);
+        const lab::LiveRegimeMeter& meter = detectors_[k];
+        r.regime = meter.regime();
+        r.flybacksPerPeriod = meter.flybacksPerPeriod();
+        r.slipsPerPeriod = meter.slipsPerPeriod();
+        r.irregularity = meter.irregularity();
+        r.stickFraction = meter.stickFraction();
+        r.muSlip = meter.muSlip();
         r.openFrequency = static_cast<float>(engine.openFrequencies[k]);
         r.frequency =
             static_cast<float>(engine.openFrequencies[k] / (in.fingerRatio > 0.0 ? in.fingerRatio : 1.0));

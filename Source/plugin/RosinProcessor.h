@@ -20,10 +20,10 @@
 #include "FactoryPrograms.h"
 #include "InstrumentSetup.h"
 #include "PluginParameters.h"
-#include "RegimeDetector.h"
 #include "StringTelemetry.h"
 #include "gesture/IntonationEar.h"
 #include "gesture/MidiGestureController.h"
+#include "lab/LiveRegimeMeter.h"
 
 namespace rosin::plugin
 {
@@ -112,7 +112,7 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     std::atomic<int> timerCallbacksRunning_{0};
     std::atomic<int> runawayResets_{0};
     std::atomic<int> nonFiniteSamples_{0};
-    std::array<RegimeDetector, gesture::MidiGestureController::kMaxStrings> detectors_{};
+    std::array<lab::LiveRegimeMeter, gesture::MidiGestureController::kMaxStrings> detectors_{};
     std::array<gesture::IntonationEar, gesture::MidiGestureController::kMaxStrings> ears_{};
     Telemetry telemetry_;
     void publishTelemetry(const Engine& engine) noexcept;

@@ -31,7 +31,7 @@ class SchellengDiagram : public juce::Component
         float beta = 0.1f;        ///< current point
         float force = 1.0f;       ///< current point, N
         bool bowing = false;      ///< the point is live
-        Regime regime = Regime::Silent;
+        Regime regime = Regime::NoSlip;
     };
 
     /// mu_s - mu_d as the diagram uses it (see above).

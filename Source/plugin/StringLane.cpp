@@ -37,11 +37,17 @@ juce::Colour StringLane::regimeColour(Regime regime)
     {
     case Regime::Helmholtz:
         return juce::Colour(0xff4caf50);
+    case Regime::SMotion:
+        return juce::Colour(0xff8bc34a);
+    case Regime::DoubleSlipping:
     case Regime::MultipleSlipping:
         return juce::Colour(0xffffb300);
+    case Regime::AnomalousLowFrequency:
+        return juce::Colour(0xff7e57c2);
     case Regime::Raucous:
         return juce::Colour(0xffe53935);
-    case Regime::Silent:
+    case Regime::ConstantSlipping:
+    case Regime::NoSlip:
         break;
     }
     return juce::Colour(0xff607d8b);
@@ -111,22 +117,22 @@ void StringLane::paint(juce::Graphics& g)
     if (r.bowing)
         g.drawText("stuck " + juce::String(juce::roundToInt(100.0f * r.stickFraction)) + " %",
                    stick.removeFromTop(row - 2.0f), juce::Justification::centredLeft);
-    if (r.regime != Regime::Silent)
+    if (r.bowing)
         g.drawText(juce::String(r.slipsPerPeriod, 2) + " slips/T", stick, juce::Justification::centredLeft);
 
     // Regime: a coloured tag and the statistics behind it.
     auto regime = area;
     auto tag = regime.removeFromTop(regime.getHeight() * 0.55f).reduced(0.0f, 3.0f);
-    const auto colour = regimeColour(r.regime);
+    const auto colour = r.bowing ? regimeColour(r.regime) : regimeColour(Regime::NoSlip);
     g.setColour(colour.withAlpha(0.85f));
     g.fillRoundedRectangle(tag.withWidth(juce::jmin(tag.getWidth(), 150.0f)), 5.0f);
     g.setColour(juce::Colours::white);
     g.setFont(juce::Font(14.0f, juce::Font::bold));
-    g.drawText(regimeName(r.regime), tag.withWidth(juce::jmin(tag.getWidth(), 150.0f)),
+    g.drawText(regimeDisplayName(r.regime, r.bowing), tag.withWidth(juce::jmin(tag.getWidth(), 150.0f)),
                juce::Justification::centred);
     g.setFont(juce::Font(12.0f));
     g.setColour(text.withAlpha(0.75f * dim));
-    if (r.regime != Regime::Silent)
+    if (r.bowing)
         g.drawText(juce::String(r.flybacksPerPeriod, 2) + " flybacks/T   CV " +
                        juce::String(r.irregularity, 2),
                    regime, juce::Justification::centredLeft);

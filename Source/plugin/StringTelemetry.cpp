@@ -3,20 +3,30 @@
 namespace rosin::plugin
 {
 
-const char* regimeName(Regime regime) noexcept
+const char* regimeDisplayName(Regime regime, bool bowing) noexcept
 {
+    if (!bowing)
+        return "silent";
     switch (regime)
     {
     case Regime::Helmholtz:
         return "Helmholtz";
+    case Regime::SMotion:
+        return "S-motion";
+    case Regime::DoubleSlipping:
+        return "double slipping";
     case Regime::MultipleSlipping:
         return "multiple slipping";
     case Regime::Raucous:
         return "raucous";
-    case Regime::Silent:
+    case Regime::AnomalousLowFrequency:
+        return "low (ALF)";
+    case Regime::ConstantSlipping:
+        return "sliding";
+    case Regime::NoSlip:
         break;
     }
-    return "silent";
+    return "stuck";
 }
 
 void StringTelemetry::publish(const StringReadout& r) noexcept
@@ -62,8 +72,8 @@ StringReadout StringTelemetry::read() const noexcept
     r.sticking = sticking_.load(relaxed);
     r.bowing = bowing_.load(relaxed);
     const int regime = regime_.load(relaxed);
-    r.regime = regime >= 0 && regime <= static_cast<int>(Regime::Raucous) ? static_cast<Regime>(regime)
-                                                                          : Regime::Silent;
+    r.regime = regime >= 0 && regime <= static_cast<int>(Regime::NoSlip) ? static_cast<Regime>(regime)
+                                                                         : Regime::NoSlip;
     return r;
 }
 

@@ -5,19 +5,16 @@
 #include <array>
 #include <atomic>
 
+#include "lab/Regime.h"
+
 namespace rosin::plugin
 {
 
-/// What a string is doing, judged from its flybacks (RegimeDetector).
-enum class Regime
-{
-    Silent = 0,       ///< bow lifted, or bowed without any slip
-    Helmholtz,        ///< one regular flyback per nominal period
-    MultipleSlipping, ///< more than one slip per period, still periodic
-    Raucous           ///< aperiodic slipping
-};
+/// What a string is doing: the lab's regimes, judged live by lab::LiveRegimeMeter.
+using lab::Regime;
 
-const char* regimeName(Regime regime) noexcept;
+/// "Helmholtz", "double slipping", ... for display; "silent" when the bow is not on a moving string.
+const char* regimeDisplayName(Regime regime, bool bowing) noexcept;
 
 /// A plain copy of one string's readouts (SI units unless said).
 struct StringReadout
@@ -38,7 +35,7 @@ struct StringReadout
     float muSlip = 0.0f;            ///< mean |f| / F_b while slipping (0: no slip in the window)
     bool sticking = true;           ///< at the end of the block
     bool bowing = false;            ///< bow on the string and moving
-    Regime regime = Regime::Silent;
+    Regime regime = Regime::NoSlip; ///< meaningful while bowing
 };
 
 class StringTelemetry

@@ -1,9 +1,9 @@
-#include "RegimeDetector.h"
+#include "LiveRegimeMeter.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace rosin::plugin
+namespace rosin::lab
 {
 
 namespace
@@ -12,30 +12,30 @@ constexpr double kMinBowSpeed = 1e-4; // m/s: below this the bow is taken as sti
 constexpr double kMinBowForce = 1e-3; // N: below this the bow is taken as lifted
 } // namespace
 
-void RegimeDetector::prepare(double sampleRate) noexcept
+void LiveRegimeMeter::prepare(double sampleRate) noexcept
 {
     sampleRate_ = sampleRate > 0.0 ? sampleRate : 48000.0;
     windowLength_ = std::max(64L, static_cast<long>(std::lround(kWindowSeconds * sampleRate_)));
     reset();
 }
 
-void RegimeDetector::reset() noexcept
+void LiveRegimeMeter::reset() noexcept
 {
     const double periodsPerSample = periodsPerSample_;
     const double sampleRate = sampleRate_;
     const long windowLength = windowLength_;
-    *this = RegimeDetector{};
+    *this = LiveRegimeMeter{};
     sampleRate_ = sampleRate;
     windowLength_ = windowLength;
     periodsPerSample_ = periodsPerSample;
 }
 
-void RegimeDetector::setNominalFrequency(double hz) noexcept
+void LiveRegimeMeter::setNominalFrequency(double hz) noexcept
 {
     periodsPerSample_ = std::isfinite(hz) && hz > 0.0 ? hz / sampleRate_ : 0.0;
 }
 
-void RegimeDetector::push(const physics::VoiceSample& s, double bowForce) noexcept
+void LiveRegimeMeter::push(const physics::VoiceSample& s, double bowForce) noexcept
 {
     const double vb = s.bowVelocity;
     const bool bowed = bowForce > kMinBowForce && std::abs(vb) > kMinBowSpeed;
@@ -60,6 +60,8 @@ void RegimeDetector::push(const physics::VoiceSample& s, double bowForce) noexce
     else
     {
         ++stickSamples_;
+        if (bowed)
+            ++bowedStickSamples_;
         if (inSlip_)
         {
             inSlip_ = false;
@@ -84,7 +86,7 @@ void RegimeDetector::push(const physics::VoiceSample& s, double bowForce) noexce
         finishWindow();
 }
 
-void RegimeDetector::finishWindow() noexcept
+void LiveRegimeMeter::finishWindow() noexcept
 {
     const double n = static_cast<double>(windowSamples_);
     stickFraction_ = static_cast<float>(stickSamples_ / n);
@@ -105,29 +107,33 @@ void RegimeDetector::finishWindow() noexcept
         cv = 0.0; // one interval at a low note in a short window: no evidence of irregularity
     irregularity_ = static_cast<float>(cv);
 
-    const bool mostlyBowed = bowedSamples_ * 2 > windowSamples_;
-    const bool regular = cv < 0.2;
-    if (!mostlyBowed || slips_ == 0 || periods <= 0.5)
-        regime_ = Regime::Silent;
-    else if (regular && flybacksPerPeriod_ >= 0.8f && flybacksPerPeriod_ <= 1.25f)
-        regime_ = Regime::Helmholtz;
-    else if (flybacksPerPeriod_ >= 1.6f && flybacksPerPeriod_ <= 4.5f)
-        regime_ = Regime::MultipleSlipping; // flybacks alternate short and long intervals: no CV test
-    else
-        regime_ = Regime::Raucous;
+    bowing_ = bowedSamples_ * 2 > windowSamples_;
+    regime_ = label(periods, cv);
 
-    windowSamples_ = bowedSamples_ = stickSamples_ = slips_ = flybacks_ = intervals_ = slipMuSamples_ = 0;
+    windowSamples_ = bowedSamples_ = bowedStickSamples_ = stickSamples_ = slips_ = flybacks_ = intervals_ =
+        slipMuSamples_ = 0;
     intervalSum_ = intervalSquares_ = periods_ = slipMuSum_ = 0.0;
 }
 
-void RegimeDetector::fillReadout(StringReadout& r) const noexcept
+Regime LiveRegimeMeter::label(double periods, double cv) const noexcept
 {
-    r.regime = regime_;
-    r.flybacksPerPeriod = flybacksPerPeriod_;
-    r.slipsPerPeriod = slipsPerPeriod_;
-    r.irregularity = irregularity_;
-    r.stickFraction = stickFraction_;
-    r.muSlip = muSlip_;
+    const float fpp = flybacksPerPeriod_;
+    const bool regular = cv < 0.2;
+    if (!bowing_ || periods <= 0.5)
+        return Regime::NoSlip;
+    if (bowedStickSamples_ * 20 < bowedSamples_)
+        return Regime::ConstantSlipping;
+    if (slips_ == 0)
+        return Regime::NoSlip;
+    if (regular && fpp >= 0.8f && fpp <= 1.25f)
+        return Regime::Helmholtz;
+    if (regular && fpp >= 0.3f && fpp < 0.8f)
+        return Regime::AnomalousLowFrequency;
+    if (fpp >= 1.6f && fpp < 2.5f)
+        return Regime::DoubleSlipping; // flybacks alternate short and long intervals: no CV test
+    if (fpp >= 2.5f && fpp <= 4.5f)
+        return Regime::MultipleSlipping;
+    return Regime::Raucous;
 }
 
-} // namespace rosin::plugin
+} // namespace rosin::lab
