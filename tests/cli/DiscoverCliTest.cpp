@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 
 #include <nlohmann/json.hpp>
 
@@ -63,6 +64,12 @@ struct HiddenEffect
     std::string parameter{}; ///< non-empty: its fitted value must lie within a factor 1.5 of the hidden one
     double hidden = 0.0;
 };
+
+// ctest lists a parameter by what is hidden, not by its bytes.
+void PrintTo(const HiddenEffect& h, std::ostream* os)
+{
+    *os << h.spec;
+}
 
 class DiscoverHiddenEffect : public DiscoverCli, public ::testing::WithParamInterface<HiddenEffect>
 {
@@ -161,6 +168,19 @@ TEST_F(DiscoverCli, MalformedDatasetIsRefusedWithFileAndField)
     EXPECT_NE(r.err.find("dataset.json"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("sampleRate"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(path("bad.json")));
+}
+
+TEST_F(DiscoverCli, RecordedBowedPointAddsSlipFractionAndLoopArea)
+{
+    makeDataset({"none"}, "4", "all", {"--beta", "0.0899", "--channels", "all"});
+    const auto j = discover("all");
+    EXPECT_EQ(j["status"], "no-significant-discrepancy");
+    for (const auto& f : j["features"])
+        if (f["name"] == "slipFraction" || f["name"] == "loopArea" || f["name"] == "regime")
+        {
+            EXPECT_GE(f["trials"].get<int>(), 3) << f["name"];
+            EXPECT_LT(f["gapBefore"].get<double>(), 0.5) << f["name"];
+        }
 }
 
 TEST_F(DiscoverCli, TruncatedTrialFileIsRefusedWithItsName)

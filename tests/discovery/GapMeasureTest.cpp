@@ -1,6 +1,7 @@
 // The gap's arithmetic: z is clipped at 3 like a one-sided feature, the paired test's per-trial shares add
 // up to the fitted objective, the chi-square test of a gap meets the table's quantile, and a model's
-// sensitivity to its settings marks features that flip as not comparable.
+// sensitivity to its settings marks features that flip as not comparable; a category's scatter is the
+// rate at which the measurement disagrees with itself.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -38,6 +39,49 @@ TEST(GapMeasure, DifferencesBeyondThreeSigmaCountAsAQualitativeDisagreement)
     // Helmholtz-motion features are compared only where both sides show them.
     EXPECT_FALSE(normalisedDifference(kHarmonicTilt, -20.0, std::nullopt, 1.0));
     EXPECT_FALSE(normalisedDifference(kJump, 1.0, 0.0, std::numeric_limits<double>::quiet_NaN()));
+}
+
+TEST(GapMeasure, TheRegimeIsComparedAsACategory)
+{
+    // A mismatch weighs 1 / sqrt(q), q the measurement's own mismatch rate: z^2 averages 1 when the model
+    // disagrees as often as the measurement disagrees with itself.
+    EXPECT_DOUBLE_EQ(*normalisedDifference(kRegime, 2.0, 2.0, 0.25), 0.0);
+    EXPECT_DOUBLE_EQ(*normalisedDifference(kRegime, 0.0, 4.0, 0.25), 2.0); // however far apart the codes
+    EXPECT_DOUBLE_EQ(*normalisedDifference(kRegime, 4.0, 0.0, kMinMismatchRate), kMissingZ);
+    TrialFeatures nominal = withFeature(kRegime, 0.0), same = withFeature(kRegime, 0.0),
+                  other = withFeature(kRegime, 4.0);
+    EXPECT_EQ(featureSensitivity(nominal, {same, same})[kRegime], 0.0);
+    EXPECT_TRUE(std::isnan(featureSensitivity(nominal, {same, other})[kRegime]));
+}
+
+// A row of 8 cells along the force axis whose regime changes once (Helmholtz to raucous): 1 of 7 adjacent
+// pairs disagree. With two repeats per cell that disagree in 2 of 8 cells, the repeats decide: q = 2 / 8.
+TEST(FeatureScatter, ARegimesScatterIsItsMismatchRate)
+{
+    ScanGrid grid;
+    std::vector<TrialFeatures> measured;
+    for (std::size_t i = 0; i < 8; ++i)
+    {
+        grid.cells.push_back(GridCell{0, i, 0, {measured.size()}});
+        measured.push_back(withFeature(kRegime, i < 3 ? 0.0 : 4.0));
+    }
+    FeatureScatter s = measureScatter(grid, measured, 48000.0);
+    EXPECT_DOUBLE_EQ(s.sigma[kRegime], 1.0 / 7.0);
+    EXPECT_EQ(s.method[kRegime], "neighbours");
+    for (std::size_t i = 0; i < 8; ++i)
+    {
+        grid.cells[i].trials.push_back(measured.size());
+        measured.push_back(withFeature(kRegime, (i == 2 || i == 5) ? 1.0 : *measured[i][kRegime]));
+    }
+    s = measureScatter(grid, measured, 48000.0);
+    EXPECT_DOUBLE_EQ(s.sigma[kRegime], 2.0 / 8.0);
+    EXPECT_EQ(s.method[kRegime], "repeats");
+    // A grid that never disagrees with itself still allows one mismatch in nine.
+    for (auto& t : measured)
+        t[kRegime] = 0.0;
+    s = measureScatter(grid, measured, 48000.0);
+    EXPECT_DOUBLE_EQ(s.sigma[kRegime], kMinMismatchRate);
+    EXPECT_EQ(s.method[kRegime], "resolution");
 }
 
 TEST(GapMeasure, TrialSharesAddUpToTheObjective)

@@ -162,10 +162,12 @@ std::string discoveryMarkdown(const Discovery& d, const Dataset& dataset,
     m += "## What disagrees, and where\n\n| feature | scatter (method) | trials | gap before | gap after | "
          "largest before |\n|---|---|---|---|---|---|\n";
     for (std::size_t f = 0; f < kFeatureCount; ++f)
-        m += std::string("| ") + featureName(f) + " | " + number(d.scatter.sigma[f]) + " " + featureUnit(f) +
-             " (" + d.scatter.method[f] + ") | " + std::to_string(d.gapBefore.count[f]) + " | " +
-             number(d.gapBefore.gap[f]) + " | " + number(d.gapAfter.gap[f]) + " | " + d.whereBefore[f] +
-             " |\n";
+        m += std::string("| ") + featureName(f) + " | " +
+             (isCategorical(f)
+                  ? "mismatch rate " + number(d.scatter.sigma[f]) + " (" + d.scatter.method[f] + ")"
+                  : number(d.scatter.sigma[f]) + " " + featureUnit(f) + " (" + d.scatter.method[f] + ")") +
+             " | " + std::to_string(d.gapBefore.count[f]) + " | " + number(d.gapBefore.gap[f]) + " | " +
+             number(d.gapAfter.gap[f]) + " | " + d.whereBefore[f] + " |\n";
     m += "\n";
     for (std::size_t k = 0; k < d.search.steps.size(); ++k)
     {

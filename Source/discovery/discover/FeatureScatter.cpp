@@ -104,6 +104,40 @@ std::vector<double> secondDifferences(const ScanGrid& grid, const std::vector<Tr
     }
     return d2;
 }
+
+// A category's scatter: the share of pairs that disagree, among repeats in one cell (at least 5 pairs) or
+// else among cells adjacent along the force or motion axis (each cell by its first valid trial).
+std::optional<std::pair<double, const char*>>
+mismatchRate(const ScanGrid& grid, const std::vector<TrialFeatures>& measured, std::size_t f)
+{
+    std::size_t pairs = 0, differ = 0;
+    std::map<std::tuple<std::size_t, std::size_t, std::size_t>, double> first;
+    for (const auto& cell : grid.cells)
+    {
+        std::vector<double> v;
+        for (std::size_t t : cell.trials)
+            if (measured[t][f])
+                v.push_back(*measured[t][f]);
+        for (std::size_t a = 0; a < v.size(); ++a)
+            for (std::size_t b = a + 1; b < v.size(); ++b)
+                ++pairs, differ += v[a] != v[b] ? 1 : 0;
+        if (!v.empty())
+            first[{cell.beta, cell.force, cell.motion}] = v.front();
+    }
+    if (pairs >= 5)
+        return std::pair{static_cast<double>(differ) / static_cast<double>(pairs), "repeats"};
+    pairs = differ = 0;
+    for (const auto& [key, value] : first)
+    {
+        const auto [b, i, m] = key;
+        for (const auto& next : {std::tuple{b, i + 1, m}, std::tuple{b, i, m + 1}})
+            if (auto it = first.find(next); it != first.end())
+                ++pairs, differ += it->second != value ? 1 : 0;
+    }
+    if (pairs >= 5)
+        return std::pair{static_cast<double>(differ) / static_cast<double>(pairs), "neighbours"};
+    return std::nullopt;
+}
 } // namespace
 
 FeatureScatter measureScatter(const ScanGrid& grid, const std::vector<TrialFeatures>& measured,
@@ -113,6 +147,13 @@ FeatureScatter measureScatter(const ScanGrid& grid, const std::vector<TrialFeatu
     for (std::size_t f = 0; f < kFeatureCount; ++f)
     {
         double sigma = 0.0;
+        if (isCategorical(f))
+        {
+            const auto rate = mismatchRate(grid, measured, f);
+            s.sigma[f] = std::max(rate ? rate->first : 1.0, kMinMismatchRate);
+            s.method[f] = !rate ? "none" : rate->first < kMinMismatchRate ? "resolution" : rate->second;
+            continue;
+        }
         if (auto r = pooledRepeats(grid, measured, f))
         {
             sigma = *r;

@@ -10,7 +10,11 @@
 //     scatter that the MAD alone would miss). The feature's own curvature over the grid adds to it, so this
 //     errs on the side of a larger scatter (a smaller gap).
 //   * Too few triples (< 4): 1.4826 MAD of the feature over all trials (a broad upper bound).
-// Every scatter is at least the feature's resolution (featureResolution). JUCE-free.
+// Every scatter is at least the feature's resolution (featureResolution).
+// A category (the regime) has no difference to scale: its scatter is the share q of pairs that disagree,
+// among repeats or else among adjacent cells (again an upper bound near a boundary), at least 1/9; a
+// disagreement then counts z = 1 / sqrt(q), so that z^2 averages 1 when the model disagrees only as often as
+// the measurement disagrees with itself (GapMeasure.h). JUCE-free.
 #include <array>
 #include <string>
 #include <vector>
@@ -21,9 +25,13 @@
 namespace rosin::discovery
 {
 
+/// The smallest mismatch rate a category is credited with: a disagreement then counts z = 3, as much as a
+/// feature seen on one side only.
+inline constexpr double kMinMismatchRate = 1.0 / 9.0;
+
 struct FeatureScatter
 {
-    std::array<double, kFeatureCount> sigma{};
+    std::array<double, kFeatureCount> sigma{}; ///< in the feature's unit; for a category, its mismatch rate
     std::array<std::string, kFeatureCount> method{}; ///< "repeats", "neighbours", "spread", "resolution"
     /// Per trial (indexed like dataset.trials; empty: none), how far the model's feature moves when the
     /// trial's settings are nudged within a bowing machine's accuracy (ModelSensitivity.h); NaN where the

@@ -12,6 +12,8 @@ std::optional<double> normalisedDifference(std::size_t feature, const std::optio
 {
     if (std::isnan(sigma) || ((!measured || !simulated) && describesHelmholtzMotion(feature)))
         return std::nullopt;
+    if (measured && simulated && isCategorical(feature))
+        return *measured == *simulated ? 0.0 : std::min(kMissingZ, 1.0 / std::sqrt(sigma));
     if (measured && simulated)
         return std::clamp((*measured - *simulated) / sigma, -kMissingZ, kMissingZ);
     if (measured)
@@ -137,7 +139,7 @@ std::string whereLargest(std::size_t feature, const Dataset& dataset, const Scan
                         (upper(cell.motion, std::max<std::size_t>(1, grid.motion.size())) << 1) |
                         (upper(cell.beta, grid.betas.size()) << 2);
     double sumSq[8] = {}, sum[8] = {};
-    int n[8] = {};
+    int n[8] = {}, differ[8] = {};
     for (std::size_t t : trials)
     {
         if (cellOf[t] < 0)
@@ -147,6 +149,7 @@ std::string whereLargest(std::size_t feature, const Dataset& dataset, const Scan
         {
             sumSq[cellOf[t]] += *z * *z;
             sum[cellOf[t]] += *z;
+            differ[cellOf[t]] += *z != 0.0 ? 1 : 0;
             ++n[cellOf[t]];
         }
     }
@@ -164,6 +167,12 @@ std::string whereLargest(std::size_t feature, const Dataset& dataset, const Scan
     text += ", " + range(grid.betas, (best >> 2) & 1, "beta", "");
     const double meanZ = sum[best] / n[best];
     char tail[160];
+    if (isCategorical(feature))
+    {
+        std::snprintf(tail, sizeof(tail), ": measured and model differ in %d of %d trials", differ[best],
+                      n[best]);
+        return text + tail;
+    }
     std::snprintf(tail, sizeof(tail),
                   ": measured %s the model by %.2g sigma on average (rms %.2g sigma, %d trials)",
                   meanZ >= 0 ? "above" : "below", std::abs(meanZ), std::sqrt(sumSq[best] / n[best]), n[best]);

@@ -7,7 +7,8 @@
 //   chaotic attack, where 1 % more force changes the outcome) must not outweigh twenty trials that each
 //   disagree by two sigma the same way. Features that describe established Helmholtz motion (pitch, harmonic
 //   tilt) are compared only where both sides show it: whether the motion was reached is the transient's
-//   and the regime's evidence, and counting it again would weigh a chaotic boundary twice.
+//   and the regime's evidence, and counting it again would weigh a chaotic boundary twice. A category (the
+//   regime) compares as same (z = 0) or different (z = 1 / sqrt(q), q its mismatch rate, at most 3).
 //   Per feature: the excess rms  gap = sqrt(max(0, mean(z^2) - 1)) over the trials where either side has
 //   the feature: 0 means the model agrees within the measurement's scatter, 1 that the disagreement is as
 //   large again as the scatter. Overall gap: the mean over features present in at least 3 trials.

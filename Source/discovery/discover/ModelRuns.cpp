@@ -47,6 +47,16 @@ Gesture nudged(Gesture gesture, double factor)
         v->speed *= factor;
     return gesture;
 }
+
+// The simulated channel the dataset also records, or nullptr.
+const std::vector<double>* recorded(const std::vector<Channel>& layout,
+                                    const std::vector<std::vector<double>>& channels, const std::string& name)
+{
+    for (std::size_t c = 0; c < layout.size(); ++c)
+        if (layout[c].name == name)
+            return &channels[c];
+    return nullptr;
+}
 } // namespace
 
 std::vector<TrialFeatures> simulateFeatures(const SimulationModel& model, const Dataset& dataset,
@@ -75,10 +85,20 @@ std::vector<TrialFeatures> simulateFeatures(const SimulationModel& model, const 
             s.bowForce = trial.bowForce * nudge.bowForce;
             s.gesture = nudged(trial.gesture, nudge.motion);
             s.seconds = seconds[i];
-            std::vector<double> force = channelSamples(sim->run(s), "bridgeForce");
-            if (dataset.sensor.highpassHz && *dataset.sensor.highpassHz > 0.0)
-                firstOrderHighPass(force, *dataset.sensor.highpassHz, dataset.sampleRate);
-            return computeTrialFeatures(force, featureContext(dataset, trial));
+            const auto samples = sim->run(s);
+            std::vector<Channel> layout;
+            std::vector<std::vector<double>> channels;
+            for (const auto& channel : dataset.channels)
+                if (channel.name != "bowForceMeasured")
+                {
+                    layout.push_back(channel);
+                    channels.push_back(channelSamples(samples, channel.name));
+                }
+            applySensorResponse(layout, channels, dataset.sensor, static_cast<double>(dataset.sampleRate));
+            return computeTrialFeatures(
+                *recorded(layout, channels, "bridgeForce"), featureContext(dataset, trial),
+                {recorded(layout, channels, "bowPointVelocity"), recorded(layout, channels, "frictionForce"),
+                 recorded(layout, channels, "bowVelocity")});
         };
     };
     runParallel<TrialFeatures>(trials, threads, makeWorker,

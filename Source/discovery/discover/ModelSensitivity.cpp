@@ -20,7 +20,12 @@ std::array<double, kFeatureCount> featureSensitivity(const TrialFeatures& nomina
                 s[f] = std::numeric_limits<double>::quiet_NaN();
                 break;
             }
-            if (run[f])
+            if (run[f] && isCategorical(f) && *run[f] != *nominal[f])
+            {
+                s[f] = std::numeric_limits<double>::quiet_NaN(); // the category itself changes
+                break;
+            }
+            if (run[f] && !isCategorical(f))
                 s[f] = std::max(s[f], std::abs(*run[f] - *nominal[f]));
         }
     return s;

@@ -6,7 +6,8 @@
 // does not see it. So the baseline is simulated twice more with the nominal force and acceleration (or
 // speed) both scaled by 1 + kSettingsNudge and by 1 - kSettingsNudge; per trial and feature the larger of
 // the two departures from the nominal run is the model's sensitivity, added in quadrature to the scatter,
-// and a feature that appears or vanishes under the nudge is not compared in that trial at all.
+// and a feature that appears or vanishes under the nudge (or a category, the regime, that changes) is not
+// compared in that trial at all.
 // The 2 % is an assumption about the rigs, not a fit: bowing machines hold force and speed to about 1-3 %.
 // JUCE-free.
 #include <cstddef>
@@ -29,7 +30,7 @@ void addModelSensitivity(FeatureScatter& scatter, const SimulationModel& model, 
                          const std::vector<double>& seconds, unsigned threads);
 
 /// Per feature: the largest departure of `nudged` runs from `nominal`, or NaN if the feature is present in
-/// some and absent in others (0 when absent in all).
+/// some and absent in others or is a category that changes (0 when absent in all, or a category that holds).
 std::array<double, kFeatureCount> featureSensitivity(const TrialFeatures& nominal,
                                                      const std::vector<TrialFeatures>& nudged);
 

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
+#include "lab/ContactCycle.h"
 #include "lab/FirstSlip.h"
 #include "lab/HarmonicTilt.h"
 #include "lab/RegimeClassifier.h"
@@ -15,10 +17,11 @@ namespace rosin::discovery
 namespace
 {
 constexpr double kTransientCap = 20.0;
-constexpr double kCreepPoint = 0.6;   ///< read the rise at this share of t1
-constexpr double kCreepWindow = 0.05; ///< averaged over +- this share of t1
-constexpr double kTiltShare = 0.4;    ///< harmonic tilt over the last 40 % of a trial
-constexpr double kTiltSettle = 2.0;   ///< periods after t_H before the tilt is read
+constexpr double kCreepPoint = 0.6;    ///< read the rise at this share of t1
+constexpr double kCreepWindow = 0.05;  ///< averaged over +- this share of t1
+constexpr double kTiltShare = 0.4;     ///< harmonic tilt over the last 40 % of a trial
+constexpr double kRegimeSettle = 20.0; ///< periods after the first slip before the regime is read
+constexpr double kTiltSettle = 2.0;    ///< periods after t_H before the tilt is read
 
 std::optional<double> tilt(const std::vector<double>& force, std::size_t from, const FeatureContext& c)
 {
@@ -45,18 +48,49 @@ std::optional<double> creepIndex(const std::vector<double>& force, const lab::Fi
     const double mean = sum / static_cast<double>(to - from + 1);
     return 1.0 - mean / (kCreepPoint * kCreepPoint * slip.forceAtSlip);
 }
+// The bow's velocity over the trial: recorded, or the gesture's nominal one.
+std::vector<double> bowVelocityOf(std::size_t frames, const FeatureContext& c, const ContactSignals& contact)
+{
+    if (contact.bowVelocity)
+        return *contact.bowVelocity;
+    std::vector<double> v(frames, 0.0);
+    for (std::size_t k = 0; k < frames; ++k)
+    {
+        if (const auto* a = std::get_if<ConstantAcceleration>(&c.gesture))
+            v[k] = a->acceleration * static_cast<double>(k) / c.sampleRate;
+        else if (const auto* s = std::get_if<Steady>(&c.gesture))
+            v[k] = s->speed;
+    }
+    return v;
+}
+
+// Slip fraction and loop area over the Helmholtz window [from, end), where the contact was recorded.
+void addContactFeatures(TrialFeatures& f, std::size_t from, std::size_t frames, const FeatureContext& c,
+                        const ContactSignals& contact)
+{
+    if (!contact.bowPointVelocity)
+        return;
+    const std::vector<double> vb = bowVelocityOf(frames, c, contact);
+    f[kSlipFraction] = lab::slipFraction(*contact.bowPointVelocity, vb, from, frames);
+    if (contact.frictionForce)
+        f[kLoopArea] = lab::normalisedLoopArea(*contact.bowPointVelocity, vb, *contact.frictionForce,
+                                               c.bowForce, from, frames, c.periodSeconds * c.sampleRate);
+}
 } // namespace
 
 const char* featureName(std::size_t feature) noexcept
 {
-    static const char* const names[kFeatureCount] = {
-        "staticFriction", "jump", "creep", "firstSlipTime", "transientPeriods", "pitchCents", "harmonicTilt"};
+    static constexpr const char* names[] = {"staticFriction",   "jump",       "creep",        "firstSlipTime",
+                                            "transientPeriods", "pitchCents", "harmonicTilt", "slipFraction",
+                                            "loopArea",         "regime"};
+    static_assert(std::size(names) == kFeatureCount, "one name per feature");
     return feature < kFeatureCount ? names[feature] : "?";
 }
 
 const char* featureUnit(std::size_t feature) noexcept
 {
-    static const char* const units[kFeatureCount] = {"", "", "", "s", "periods", "cents", "dB"};
+    static constexpr const char* units[] = {"", "", "", "s", "periods", "cents", "dB", "", "", ""};
+    static_assert(std::size(units) == kFeatureCount, "one unit per feature");
     return feature < kFeatureCount ? units[feature] : "";
 }
 
@@ -75,6 +109,10 @@ double featureResolution(std::size_t feature, double sampleRate) noexcept
         return 0.5;
     case kHarmonicTilt:
         return 0.2;
+    case kSlipFraction:
+        return 0.005;
+    case kLoopArea:
+        return 0.002;
     default:
         return 1.0;
     }
@@ -82,7 +120,13 @@ double featureResolution(std::size_t feature, double sampleRate) noexcept
 
 bool describesHelmholtzMotion(std::size_t feature) noexcept
 {
-    return feature == kPitchCents || feature == kHarmonicTilt;
+    return feature == kPitchCents || feature == kHarmonicTilt || feature == kSlipFraction ||
+           feature == kLoopArea;
+}
+
+bool isCategorical(std::size_t feature) noexcept
+{
+    return feature == kRegime;
 }
 
 FeatureContext featureContext(const Dataset& dataset, const Trial& trial)
@@ -98,7 +142,8 @@ FeatureContext featureContext(const Dataset& dataset, const Trial& trial)
     return c;
 }
 
-TrialFeatures computeTrialFeatures(const std::vector<double>& force, const FeatureContext& c)
+TrialFeatures computeTrialFeatures(const std::vector<double>& force, const FeatureContext& c,
+                                   const ContactSignals& contact)
 {
     TrialFeatures f;
     const double periodSamples = c.periodSeconds * c.sampleRate;
@@ -124,13 +169,26 @@ TrialFeatures computeTrialFeatures(const std::vector<double>& force, const Featu
             t.capPeriods = kTransientCap;
             t.windowEnd = force.size();
             const lab::TransientLength tr = lab::measureTransient(onsets, periodSamples, t);
+            const double settledRegime = slip.firstSlipTime * c.sampleRate + kRegimeSettle * periodSamples;
+            const auto regimeFrom = static_cast<std::size_t>(
+                std::max(settledRegime, (1.0 - kTiltShare) * static_cast<double>(force.size())));
+            if (regimeFrom + 4 * static_cast<std::size_t>(periodSamples) < force.size())
+            {
+                const lab::RegimeAnalysis r = lab::classifyFromBridgeForce(
+                    force, periodSamples, lab::AnalysisWindow{regimeFrom, 0}, onsetOptions);
+                f[kRegime] = static_cast<double>(r.regime);
+                if (r.regime == lab::Regime::Helmholtz)
+                    f[kPitchCents] = r.pitchCents;
+            }
             if (tr.slipped && (tr.periods || !tr.insufficientData))
                 f[kTransientPeriods] = std::min(tr.periods.value_or(kTransientCap), kTransientCap);
             if (tr.helmholtzStart)
             {
                 const double settled = static_cast<double>(*tr.helmholtzStart) + kTiltSettle * periodSamples;
                 const double tail = (1.0 - kTiltShare) * static_cast<double>(force.size());
-                f[kHarmonicTilt] = tilt(force, static_cast<std::size_t>(std::max(settled, tail)), c);
+                const auto from = static_cast<std::size_t>(std::max(settled, tail));
+                f[kHarmonicTilt] = tilt(force, from, c);
+                addContactFeatures(f, from, force.size(), c, contact);
             }
         }
     }
@@ -138,10 +196,12 @@ TrialFeatures computeTrialFeatures(const std::vector<double>& force, const Featu
     {
         const lab::RegimeAnalysis r = lab::classifyFromBridgeForce(
             force, periodSamples, lab::AnalysisWindow{force.size() / 2, 0}, onsetOptions);
+        f[kRegime] = static_cast<double>(r.regime);
         if (r.regime == lab::Regime::Helmholtz)
         {
             f[kPitchCents] = r.pitchCents;
             f[kHarmonicTilt] = tilt(force, force.size() / 2, c);
+            addContactFeatures(f, force.size() / 2, force.size(), c, contact);
         }
     }
     return f;

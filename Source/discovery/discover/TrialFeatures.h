@@ -12,13 +12,25 @@
 //   firstSlipTime    t1, s (the slip at the bow: the first fall minus the travel time beta P / 2)
 //   transientPeriods periods from t1 to lasting Helmholtz motion (lab::measureTransient on the force's slip
 //                    onsets), capped at 20 (the seed's "not reached" counts as 20)
-//   pitchCents       steady gestures in Helmholtz motion: 1200 log2(P / P_m) over the second half
-//                    (lab::classifyFromBridgeForce; the flattening of the Helmholtz period)
+//   pitchCents       in Helmholtz motion: 1200 log2(P / P_m) over the regime's window (below), the
+//                    flattening of the Helmholtz period (lab::classifyFromBridgeForce)
 //   harmonicTilt     in established Helmholtz motion (the last 40 % of the trial, after t_H + 2 P; the
 //                    second half of a steady one): harmonics 25-60 against 1-4 of the bridge force, dB
 //                    (lab::harmonicTiltDb): how round the Helmholtz corner is, i.e. the string's losses
-//                    against the friction's sharpening. (Read in any regime, it is as chaotic as the regime
-//                    and hides the losses: tried and dropped.)
+//                    against the friction's sharpening; the spectral decay of the harmonics, which is how
+//                    the losses show while the bow stays on the string (no gesture of the format lets the
+//                    string ring freely). Read in any regime, it is as chaotic as the regime and hides the
+//                    losses: tried and dropped.
+//   slipFraction     where the dataset records bowPointVelocity, over the same window as harmonicTilt: the
+//                    share of the time the string slips past the bow (lab::slipFraction; beta in ideal
+//                    Helmholtz motion, more as the corners round)
+//   loopArea         where it also records frictionForce: the hysteresis loop's signed area in (v - v_b, f/N)
+//                    per period over the mean bow speed (lab::normalisedLoopArea; 0 for a friction curve)
+//   regime           the regime of the bridge force over the last 40 % of the trial (from 20 periods
+//                    after the first slip at the earliest; the second half of a steady trial): lab::Regime
+//                    as a number, compared as a category (same: z = 0; different: z = 3, as for a feature
+//                    seen on one side only)
+// The bow's velocity is the bowVelocity channel where recorded, else the gesture's nominal one.
 // JUCE-free.
 #include <array>
 #include <cstddef>
@@ -40,6 +52,9 @@ enum Feature : std::size_t
     kTransientPeriods,
     kPitchCents,
     kHarmonicTilt,
+    kSlipFraction,
+    kLoopArea,
+    kRegime,
     kFeatureCount
 };
 
@@ -49,11 +64,16 @@ const char* featureName(std::size_t feature) noexcept;
 const char* featureUnit(std::size_t feature) noexcept;
 /// The smallest scatter a feature is credited with (its resolution), so a quantised or noise-free feature
 /// does not divide by zero: 0.002 (mu_s, jump), 0.005 (creep), 0.1 ms, 0.5 periods, 1 cent,
-/// 0.2 dB.
+/// 0.2 dB, 0.005 (slip fraction), 0.002 (loop area), 1
+/// (regime: a category).
 double featureResolution(std::size_t feature, double sampleRate) noexcept;
 
-/// True for the features measured only in established Helmholtz motion (pitchCents, harmonicTilt).
+/// True for the features measured only in established Helmholtz motion (pitchCents, harmonicTilt,
+/// slipFraction, loopArea).
 bool describesHelmholtzMotion(std::size_t feature) noexcept;
+
+/// True for a feature whose value names a category (the regime): compared as equal or not.
+bool isCategorical(std::size_t feature) noexcept;
 
 using TrialFeatures = std::array<std::optional<double>, kFeatureCount>;
 
@@ -69,8 +89,17 @@ struct FeatureContext
     double noiseRms = 0.0;      ///< sensor noise, N (the same threshold for measurement and simulation)
 };
 
-/// The features of one trial from its bridge force (N, as recorded).
-TrialFeatures computeTrialFeatures(const std::vector<double>& bridgeForce, const FeatureContext& context);
+/// The bowed point's own channels, where a dataset has them (nullptr where not).
+struct ContactSignals
+{
+    const std::vector<double>* bowPointVelocity = nullptr; ///< m/s
+    const std::vector<double>* frictionForce = nullptr;    ///< N
+    const std::vector<double>* bowVelocity = nullptr;      ///< m/s; nullptr: the gesture's nominal one
+};
+
+/// The features of one trial from its bridge force (N, as recorded) and, where recorded, its contact.
+TrialFeatures computeTrialFeatures(const std::vector<double>& bridgeForce, const FeatureContext& context,
+                                   const ContactSignals& contact = {});
 
 /// The context of a dataset's trial.
 FeatureContext featureContext(const Dataset& dataset, const Trial& trial);
