@@ -60,12 +60,14 @@ std::vector<SlipEpisode> slipEpisodesFromVoice(const std::vector<physics::VoiceS
         if (s.sticking)
             continue;
         if (samples[k - 1].sticking)
-            episodes.push_back({k, 0, false});
+            episodes.push_back({k, 0, false, 0.0, std::abs(s.bowVelocity)});
         if (episodes.empty())
             continue; // a run under way at sample 0
         auto& e = episodes.back();
         ++e.duration;
-        if (std::abs(s.bowPointVelocity - s.bowVelocity) > std::abs(s.bowVelocity))
+        const double slip = std::abs(s.bowPointVelocity - s.bowVelocity);
+        e.peakSlipSpeed = std::max(e.peakSlipSpeed, slip);
+        if (slip > std::abs(s.bowVelocity))
             e.flyback = true;
     }
     return episodes;
@@ -97,7 +99,7 @@ std::vector<SlipEpisode> slipEpisodesFromRelativeVelocity(const std::vector<doub
         const bool sliding = std::abs(relativeVelocity[k]) > threshold;
         if (sliding && !wasSliding)
         {
-            episodes.push_back({k, 0, !knowBow});
+            episodes.push_back({k, 0, !knowBow, 0.0, knowBow ? std::abs(bowVelocity[k]) : 0.0});
             inRun = true;
         }
         if (!sliding)
@@ -106,6 +108,7 @@ std::vector<SlipEpisode> slipEpisodesFromRelativeVelocity(const std::vector<doub
         {
             auto& e = episodes.back();
             ++e.duration;
+            e.peakSlipSpeed = std::max(e.peakSlipSpeed, std::abs(relativeVelocity[k]));
             if (knowBow && std::abs(relativeVelocity[k]) > std::abs(bowVelocity[k]))
                 e.flyback = true;
         }
@@ -119,6 +122,18 @@ std::vector<SlipEpisode> flybacksOnly(const std::vector<SlipEpisode>& episodes)
     std::vector<SlipEpisode> out;
     std::copy_if(episodes.begin(), episodes.end(), std::back_inserter(out),
                  [](const SlipEpisode& e) { return e.flyback; });
+    return out;
+}
+
+std::vector<SlipEpisode> fullFlybacksOnly(const std::vector<SlipEpisode>& episodes, double beta, double share)
+{
+    std::vector<SlipEpisode> out;
+    std::copy_if(episodes.begin(), episodes.end(), std::back_inserter(out),
+                 [=](const SlipEpisode& e)
+                 {
+                     const bool measured = e.peakSlipSpeed > 0.0 || e.bowSpeedAtOnset > 0.0;
+                     return e.flyback && (!measured || e.peakSlipSpeed >= share * e.bowSpeedAtOnset / beta);
+                 });
     return out;
 }
 

@@ -22,6 +22,9 @@ struct SlipEpisode
     /// The string moved backwards, |v - v_b| > |v_b| (the flyback of Helmholtz motion). Known only when the
     /// episodes come from velocities; episodes from the sticking flag alone are taken as flybacks.
     bool flyback = true;
+    /// Largest |v - v_b| in the episode and |v_b| at its onset, m/s (known only from velocities; 0 else).
+    double peakSlipSpeed = 0.0;
+    double bowSpeedAtOnset = 0.0;
 };
 
 /// Episodes from the solver's sticking flag. A run already under way at sample 0 is not an onset (its start
@@ -52,6 +55,13 @@ std::vector<SlipEpisode> slipEpisodesFromRelativeVelocity(const std::vector<doub
 /// Only the flybacks: partial slips, in which the string lags the bow without reversing (the ripple of a
 /// rounded Helmholtz corner), are dropped.
 std::vector<SlipEpisode> flybacksOnly(const std::vector<SlipEpisode>& episodes);
+
+/// The flybacks that carry the string back at least `share` of the ideal Helmholtz flyback speed v_b / beta
+/// (relative to the bow, at the onset's bow speed). A flyback of Helmholtz motion, even with rounded corners,
+/// reaches most of it; the short secondary reversals of a thermal law at a slow bow (a few % of it) do not,
+/// and neither they nor the ripple are a period's slip. Episodes without velocities pass.
+std::vector<SlipEpisode> fullFlybacksOnly(const std::vector<SlipEpisode>& episodes, double beta,
+                                          double share);
 
 /// Onset sample indices of the episodes.
 std::vector<std::size_t> onsetsOf(const std::vector<SlipEpisode>& episodes);

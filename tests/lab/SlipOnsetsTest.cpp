@@ -70,6 +70,34 @@ TEST(SlipOnsets, EpisodesFromVoiceSamplesMarkFlybacks)
     EXPECT_TRUE(e[1].flyback);
 }
 
+// Ideal Helmholtz motion at beta 0.1 flies back at v_b / beta = 1 m/s relative to a 0.1 m/s bow: a
+// flyback reaching 0.3 m/s (30 %) counts at a 25 % share, a short reversal to -0.02 m/s (dv = 0.12 m/s,
+// 12 %) does not; episodes without velocities (from the state alone) pass unjudged.
+TEST(SlipOnsets, FullFlybacksReachAShareOfTheHelmholtzFlybackSpeed)
+{
+    const double vb = 0.1, beta = 0.1;
+    std::vector<rosin::physics::VoiceSample> v(12);
+    for (auto& s : v)
+        s.bowVelocity = s.bowPointVelocity = vb;
+    v[2].sticking = v[3].sticking = false; // a short reversal
+    v[2].bowPointVelocity = -0.01, v[3].bowPointVelocity = -0.02;
+    v[7].sticking = v[8].sticking = false; // a flyback
+    v[7].bowPointVelocity = -0.1, v[8].bowPointVelocity = -0.2;
+    const auto e = slipEpisodesFromVoice(v);
+    ASSERT_EQ(flybacksOnly(e).size(), 2u);
+    EXPECT_DOUBLE_EQ(e[0].peakSlipSpeed, 0.12);
+    EXPECT_DOUBLE_EQ(e[1].peakSlipSpeed, 0.3);
+    EXPECT_DOUBLE_EQ(e[1].bowSpeedAtOnset, vb);
+    const auto full = fullFlybacksOnly(e, beta, 0.25);
+    ASSERT_EQ(full.size(), 1u);
+    EXPECT_EQ(full[0].onset, 7u);
+    EXPECT_EQ(fullFlybacksOnly(e, beta, 0.1).size(), 2u);
+    EXPECT_EQ(fullFlybacksOnly(e, beta, 0.35).size(), 0u);
+    std::vector<bool> sticking(12, true);
+    sticking[4] = false;
+    EXPECT_EQ(fullFlybacksOnly(slipEpisodesFromState(sticking), beta, 0.25).size(), 1u);
+}
+
 // A Helmholtz sawtooth with ~1/beta Schelleng ripples, 0.3 % noise and a 0.5 Hz sensor high-pass: every
 // flyback found, at the right sample, and nothing else.
 TEST(SlipOnsets, BridgeForceFlybacksFoundThroughNoiseAndRipple)

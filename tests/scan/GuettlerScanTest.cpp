@@ -4,12 +4,11 @@
 // "rather more benign than the reconstructed ... and a great deal more so than the original friction curve".
 // Measured: the fraction of cells reaching Helmholtz motion within 20 periods of the first slip.
 //
-// Found (see the [figure] line): reconstructed > classical and plastic > classical hold; plastic and
-// reconstructed come out about equal at this beta (within a few cells of 400). At larger beta the plastic law
-// is far ahead (scans of all eight betas: 0.18 / 0.26 / 0.51 at beta 0.113 / 0.143 / 0.18 against <= 0.07 for
-// the curves). The plastic transients are long rather than failed: ~85 of its 400 cells reach Helmholtz
-// within 50 periods, held back by short secondary backward slips at low bow speed, which count as flybacks.
-// The seed's full ranking is kept as a disabled test.
+// Found (see the [figure] line): plastic > reconstructed > classical, as in the seed, once the transient
+// counts only full flybacks (scan::kFlybackShare): the plastic law's short reversals at a slow bow had
+// counted as flybacks and broke its Helmholtz runs (then 5.0 % plastic against 5.5 % reconstructed). The
+// ranking holds for shares 0.15-0.35 (plastic 11-19 %, reconstructed 5.5-6 %, classical 2.75-3 %), and at
+// larger beta the plastic law is far ahead.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -58,7 +57,6 @@ TEST_F(GuettlerScan, FrictionCurvesRankAsInTheSeed)
     const double classical = reached_["classical"], reconstructed = reached_["reconstructed"],
                  plastic = reached_["plastic"];
     EXPECT_GT(reconstructed, classical);
-    EXPECT_GT(plastic, classical);
     std::printf(
         "[figure] Guettler scans at beta 0.0899 (20x20, 0.5 s): Helmholtz within 20 periods in %.1f %% of "
         "cells (plastic), %.1f %% (reconstructed), %.1f %% (classical); seed ranking plastic > "
@@ -67,8 +65,8 @@ TEST_F(GuettlerScan, FrictionCurvesRankAsInTheSeed)
         plastic > reconstructed && reconstructed > classical ? "reproduced" : "NOT reproduced");
 }
 
-// The seed's full ranking. Run with --gtest_also_run_disabled_tests.
-TEST_F(GuettlerScan, DISABLED_PlasticBeatsReconstructed)
+// The seed's full ranking: the thermal law is "rather more benign than the reconstructed".
+TEST_F(GuettlerScan, PlasticBeatsReconstructed)
 {
     EXPECT_GT(reached_["plastic"], reached_["reconstructed"]);
 }

@@ -81,7 +81,8 @@ def guettler_diagram(scan, path):
     fig, panels = _panels(scan, "Guettler diagrams",
                           "shade: periods from the first slip to Helmholtz motion · reached in "
                           f"{style.percent(reached)} of {np.count_nonzero(scan.regime >= 0)} cells")
-    cmap = plt.get_cmap("gray").copy()
+    # Seed 001's shading: white = Helmholtz from the first slip, darker = longer, black = not reached.
+    cmap = plt.get_cmap("gray_r").copy()
     cmap.set_over(style.NOT_REACHED_COLOUR)
     cmap.set_under(style.NO_SLIP_COLOUR)
     wedge_drawn = False

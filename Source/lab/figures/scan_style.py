@@ -46,7 +46,7 @@ REGIME_FILL = {
     "constant-slipping": "#e0e0e0", "no-slip": "#f7f7f7",
 }
 
-NOT_REACHED_COLOUR = "#f3dfb6"  # Guettler cap colour: pale wheat, not a grey
+NOT_REACHED_COLOUR = "black"  # Guettler cap colour, as seed 001 Figs. 5-8: white is a perfect start
 NO_SLIP_COLOUR = "#a6cee3"      # never slipped: pale blue
 WEDGE_COLOUR = "#e41a1c"
 MAX_LINE_COLOUR = "#c51b7d"     # Schelleng maximum force and the fitted upper edge

@@ -52,9 +52,9 @@ double transientPeriod(const lab::RegimeAnalysis& steady, double nominal)
 // Helmholtz run must start within the cap and last to the end of that window. The bow keeps accelerating
 // (Guettler) and F_min grows with the bow speed, so "lasting to the end of the trial" would make the
 // transient depend on the trial's length; this window does not, as long as the trial covers it.
-void addTransient(const std::vector<physics::VoiceSample>& samples, double P, CellResult& r)
+void addTransient(const std::vector<physics::VoiceSample>& samples, double P, double beta, CellResult& r)
 {
-    auto episodes = lab::flybacksOnly(lab::slipEpisodesFromVoice(samples));
+    auto episodes = lab::fullFlybacksOnly(lab::slipEpisodesFromVoice(samples), beta, kFlybackShare);
     if (episodes.empty())
         return;
     const double window = static_cast<double>(episodes.front().onset) + 2.0 * kTransientCapPeriods * P;
@@ -88,7 +88,7 @@ CellResult analyseTrial(const std::vector<physics::VoiceSample>& samples, const 
     if (steady.measuredPeriod > 0.0)
         r.pitchCents = steady.pitchCents;
 
-    addTransient(samples, transientPeriod(steady, c.periodSamples), r);
+    addTransient(samples, transientPeriod(steady, c.periodSamples), c.cell.beta, r);
     return r;
 }
 
