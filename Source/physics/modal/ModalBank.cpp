@@ -12,7 +12,7 @@ void ModalBank::configure(const std::vector<ModeSpec>& modes, double sampleRate)
         throw std::invalid_argument("ModalBank: sample rate must be positive");
     T_ = 1.0 / sampleRate;
     const auto n = modes.size();
-    for (auto* v : {&pRe, &pIm, &dRe, &dIm, &wRe, &wIm})
+    for (auto* v : {&pRe, &pIm, &wRe, &wIm})
         v->assign(n, 0.0);
     s.assign(n, {});
     for (std::size_t i = 0; i < n; ++i)
@@ -38,8 +38,6 @@ void ModalBank::setPole(int n, const ModeSpec& spec) noexcept
     const std::complex<double> p = std::exp(pole * T_);
     pRe[n] = p.real();
     pIm[n] = p.imag();
-    dRe[n] = p.real() * T_;
-    dIm[n] = p.imag() * T_;
     s[n] = pole;
 }
 

@@ -45,6 +45,7 @@ class ModalBank
     void retune(const ModeSpec* modes, int count) noexcept;
     void reset() noexcept;
     int size() const noexcept { return static_cast<int>(pRe.size()); }
+    double timeStep() const noexcept { return T_; }
 
     /// Complex output coefficient rho of mode n for an output kind: y_n = 2 Re(rho w_n) (+ x for accel.).
     std::complex<double> residue(int n, ModalOutput kind) const noexcept;
@@ -59,7 +60,6 @@ class ModalBank
 
     // Split arrays (public for the kernels; treat as read-only outside ModalKernels).
     std::vector<double> pRe, pIm;        ///< digital pole p
-    std::vector<double> dRe, dIm;        ///< state input gain p T
     std::vector<double> wRe, wIm;        ///< state w~
     std::vector<std::complex<double>> s; ///< continuous pole (upper half plane)
 

@@ -20,8 +20,7 @@ TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const double* gainA, double 
     double* __restrict wi = bank.wIm.data();
     const double* __restrict pr = bank.pRe.data();
     const double* __restrict pi = bank.pIm.data();
-    const double* __restrict dr = bank.dRe.data();
-    const double* __restrict di = bank.dIm.data();
+    const double T = bank.timeStep();
     const double* __restrict o1r = o1.re.data();
     const double* __restrict o1i = o1.im.data();
     const double* __restrict o2r = o2.re.data();
@@ -31,8 +30,9 @@ TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const double* gainA, double 
     for (int k = 0; k < n; ++k)
     {
         const double x = gainA[k] * a + gainB[k] * b;
-        const double nr = pr[k] * wr[k] - pi[k] * wi[k] + dr[k] * x;
-        const double ni = pr[k] * wi[k] + pi[k] * wr[k] + di[k] * x;
+        const double kicked = wr[k] + T * x; // w~[k+1] = p (w~[k] + T x[k])
+        const double nr = pr[k] * kicked - pi[k] * wi[k];
+        const double ni = pr[k] * wi[k] + pi[k] * kicked;
         wr[k] = nr;
         wi[k] = ni;
         s1 += o1r[k] * nr - o1i[k] * ni;
@@ -50,8 +50,7 @@ double advanceOneInputOneOutput(ModalBank& bank, const double* gain, double a,
     double* __restrict wi = bank.wIm.data();
     const double* __restrict pr = bank.pRe.data();
     const double* __restrict pi = bank.pIm.data();
-    const double* __restrict dr = bank.dRe.data();
-    const double* __restrict di = bank.dIm.data();
+    const double T = bank.timeStep();
     const double* __restrict o1r = o1.re.data();
     const double* __restrict o1i = o1.im.data();
     double s1 = 0.0;
@@ -59,8 +58,9 @@ double advanceOneInputOneOutput(ModalBank& bank, const double* gain, double a,
     for (int k = 0; k < n; ++k)
     {
         const double x = gain[k] * a;
-        const double nr = pr[k] * wr[k] - pi[k] * wi[k] + dr[k] * x;
-        const double ni = pr[k] * wi[k] + pi[k] * wr[k] + di[k] * x;
+        const double kicked = wr[k] + T * x; // w~[k+1] = p (w~[k] + T x[k])
+        const double nr = pr[k] * kicked - pi[k] * wi[k];
+        const double ni = pr[k] * wi[k] + pi[k] * kicked;
         wr[k] = nr;
         wi[k] = ni;
         s1 += o1r[k] * nr - o1i[k] * ni;
@@ -77,8 +77,7 @@ ThreeSums advanceOneInputThreeOutputs(ModalBank& bank, const double* gain, doubl
     double* __restrict wi = bank.wIm.data();
     const double* __restrict pr = bank.pRe.data();
     const double* __restrict pi = bank.pIm.data();
-    const double* __restrict dr = bank.dRe.data();
-    const double* __restrict di = bank.dIm.data();
+    const double T = bank.timeStep();
     const double* __restrict o1r = o1.re.data();
     const double* __restrict o1i = o1.im.data();
     const double* __restrict o2r = o2.re.data();
@@ -90,8 +89,9 @@ ThreeSums advanceOneInputThreeOutputs(ModalBank& bank, const double* gain, doubl
     for (int k = 0; k < n; ++k)
     {
         const double x = gain[k] * a;
-        const double nr = pr[k] * wr[k] - pi[k] * wi[k] + dr[k] * x;
-        const double ni = pr[k] * wi[k] + pi[k] * wr[k] + di[k] * x;
+        const double kicked = wr[k] + T * x; // w~[k+1] = p (w~[k] + T x[k])
+        const double nr = pr[k] * kicked - pi[k] * wi[k];
+        const double ni = pr[k] * wi[k] + pi[k] * kicked;
         wr[k] = nr;
         wi[k] = ni;
         s1 += o1r[k] * nr - o1i[k] * ni;

@@ -39,6 +39,7 @@ void HeatBalance::prepare(const ContactGeometry& geometry, const ThermalMaterial
         weight_[m] = c[m] * tau[m] * (1.0 - decay_[m]); // int over one step of c e^{-t/tau}, per unit flux
     }
     g0_ = kernel_.firstStepWeight();
+    forceTerms_ = {}; // new geometry, material or time step
     stationaryResistance_ = kernel_.discreteSteadyResistance();
     reset();
 }
@@ -51,27 +52,39 @@ void HeatBalance::reset() noexcept
     lastFlux_ = 0.0;
 }
 
-HeatBalance::Local HeatBalance::local(double slidingSpeed, double bowForce) const noexcept
+const HeatBalance::ForceTerms& HeatBalance::forceTerms(double bowForce) const noexcept
 {
-    const double v = sanitiseNonNegative(slidingSpeed);
-    const double a = geometry_.radiusAt(clampForce(bowForce));
+    const double F = clampForce(bowForce);
+    if (F == forceTerms_.force)
+        return forceTerms_;
+    const double a = geometry_.radiusAt(F);
     const double area = std::numbers::pi * a * a;
     const double rhoC = material_.volumetricHeatCapacity;
     const double delta = geometry_.layerThickness;
-    Local l;
-    l.capacityRate = rhoC * area * delta / dt_;
-    l.conductance = rhoC * material_.advectionWidthRatio * a * delta * v   // advection
-                    + area * effusivity_ * std::sqrt(3.0 * v / (8.0 * a)); // moving side
-    l.kernelScale = (geometry_.radius * geometry_.radius) / (a * a);       // A_ref / A
-    return l;
+    ForceTerms& t = forceTerms_;
+    t.force = F;
+    t.capacityRate = rhoC * area * delta / dt_;
+    t.advectionPerSpeed = rhoC * material_.advectionWidthRatio * a * delta;
+    t.movingPerRootSpeed = area * effusivity_ * std::sqrt(3.0 / (8.0 * a));
+    t.kernelScale = (geometry_.radius * geometry_.radius) / (a * a); // A_ref / A
+    t.invScaledG0 = 1.0 / (t.kernelScale * g0_);
+    return t;
+}
+
+HeatBalance::Local HeatBalance::local(double slidingSpeed, double bowForce) const noexcept
+{
+    const double v = sanitiseNonNegative(slidingSpeed);
+    const ForceTerms& t = forceTerms(bowForce);
+    // G_loc = advection (rho c w delta v) + moving-side conduction (pi a^2 e sqrt(3 v / (8 a))).
+    return {t.capacityRate, t.advectionPerSpeed * v + t.movingPerRootSpeed * std::sqrt(v), t.kernelScale,
+            t.invScaledG0};
 }
 
 // T[n] = (P + C T[n-1]/dt + H/g0) / (C/dt + G_loc + 1/g0), with g0 scaled by A_ref/A (reference eq. 2.9).
 double HeatBalance::solveTemperature(double powerW, const Local& l) const noexcept
 {
-    const double invG0 = 1.0 / (l.kernelScale * g0_);
-    return (powerW + l.capacityRate * temperature_ + historySum_ * invG0) /
-           (l.capacityRate + l.conductance + invG0);
+    return (powerW + l.capacityRate * temperature_ + historySum_ * l.invScaledG0) /
+           (l.capacityRate + l.conductance + l.invScaledG0);
 }
 
 double HeatBalance::predict(double powerW, double slidingSpeed, double bowForce) const noexcept
@@ -83,7 +96,7 @@ void HeatBalance::commit(double powerW, double slidingSpeed, double bowForce) no
 {
     const Local l = local(slidingSpeed, bowForce);
     const double T = solveTemperature(sanitiseNonNegative(powerW), l);
-    const double flux = (T - historySum_) / (l.kernelScale * g0_); // Q[n] into the stationary side, W
+    const double flux = (T - historySum_) * l.invScaledG0; // Q[n] into the stationary side, W
     if (!std::isfinite(T) || !std::isfinite(flux))
     {
         reset();

@@ -63,7 +63,17 @@ class HeatBalance
         double capacityRate; ///< C / dt, W/K
         double conductance;  ///< G_loc = advection + moving-side conduction, W/K
         double kernelScale;  ///< A_ref / A: multiplies the kernel weights c_m and g0
+        double invScaledG0;  ///< 1 / (kernelScale g0), W/K
     };
+    /// The parts of Local that depend on the bow force only. A friction law asks for them three times per
+    /// sample at one force (predict, correct, commit), and the contact radius costs a cube root each time.
+    struct ForceTerms
+    {
+        double force = -1.0; ///< the (clamped) force they were computed for; < 0 before the first use
+        double capacityRate = 0.0, advectionPerSpeed = 0.0, movingPerRootSpeed = 0.0;
+        double kernelScale = 1.0, invScaledG0 = 0.0;
+    };
+    const ForceTerms& forceTerms(double bowForce) const noexcept;
     Local local(double slidingSpeed, double bowForce) const noexcept;
     double solveTemperature(double powerW, const Local& l) const noexcept;
 
@@ -80,6 +90,7 @@ class HeatBalance
     double temperature_ = 0.0;
     double historySum_ = 0.0; ///< H for the next step, K
     double lastFlux_ = 0.0;
+    mutable ForceTerms forceTerms_; ///< a cache: same values for the same force, so const methods may fill it
 };
 
 } // namespace rosin::physics

@@ -10,6 +10,7 @@ void ThermalContact::prepare(double sampleRate, CalibrationQuantity quantity)
 {
     heat_.prepare(contact_, sampleRate);
     table_.build(contact_, sampleRate, quantity);
+    areaForce_ = -1.0;
     prepared_ = true;
     reset();
 }
@@ -40,8 +41,13 @@ void ThermalContact::commit(const JunctionSolution& solution, double bowForce) n
 
 double ThermalContact::area(double bowForce) const noexcept
 {
-    const double a = contact_.rig.radiusAt(bowForce);
-    return std::numbers::pi * a * a;
+    if (bowForce != areaForce_)
+    {
+        const double a = contact_.rig.radiusAt(bowForce);
+        areaForce_ = bowForce;
+        area_ = std::numbers::pi * a * a;
+    }
+    return area_;
 }
 
 } // namespace rosin::physics

@@ -47,6 +47,8 @@ class ThermalContact
     double previousPower_ = 0.0; ///< W, |f dv| of the previous sample
     double previousSpeed_ = 0.0; ///< m/s, |dv| of the previous sample
     bool prepared_ = false;
+    // area() for the last force asked (the laws ask every sample, and the radius costs a root); a cache.
+    mutable double areaForce_ = -1.0, area_ = 0.0;
 };
 
 } // namespace rosin::physics
