@@ -127,7 +127,7 @@ const Measured& measured(const std::string& name)
         for (int j = 0; j < d.bank.size(); ++j)
         {
             const cd p(d.bank.pRe[j], d.bank.pIm[j]);
-            const cd rd = d.bank.residue(j, ModalOutput::Velocity) * cd(d.bank.dRe[j], d.bank.dIm[j]);
+            const cd rd = d.bank.residue(j, ModalOutput::Velocity) * (p * d.bank.timeStep());
             h += d.gain[j] * (rd / (z - p) + std::conj(rd) / (z - std::conj(p)));
         }
         m.expected[i] = h + d.direct;
