@@ -106,6 +106,7 @@ const Measured& measured(const std::string& name)
     DiscreteBody d;
     configure(d, m.body);
     std::vector<double> v(nfft);
+    const std::vector<ModalReal> gainIn(d.gain.begin(), d.gain.end());
     {
         ScopedFlushDenormals flush;
         double history = 0.0;
@@ -113,7 +114,7 @@ const Measured& measured(const std::string& name)
         {
             const double force = k == 0 ? 1.0 : 0.0;
             v[k] = history + d.direct * force;
-            history = advanceOneInputOneOutput(d.bank, d.gain.data(), force, d.velocity);
+            history = advanceOneInputOneOutput(d.bank, gainIn.data(), force, d.velocity);
         }
     }
     Eigen::FFT<double> fft;
@@ -171,7 +172,9 @@ TEST(BodyAdmittance, DiscreteBodyMatchesItsOwnTransferFunctionOverWholeBand)
             m.spectrum, 20.0, 0.45 * fs, [&](std::size_t i) { return m.expected[i]; }, expectedStride);
         std::printf("[%s] DFT of impulse response vs bank transfer function, 20 Hz-21.6 kHz: max %.2e\n",
                     name.c_str(), e.maxRel);
-        EXPECT_LT(e.maxRel, 1e-9) << name;
+        // The kernels run in single precision (ModalReal): the simulated response carries rounding of ~1e-5
+        // of |Y| (measured 9e-6), while an error in the state model or the direct terms would be O(1).
+        EXPECT_LT(e.maxRel, 1e-4) << name;
     }
 }
 
@@ -217,13 +220,15 @@ TEST(BodyAdmittance, DiscreteBodyDrainsTheRightPowerInOctaveBands)
 
 TEST(BodyAdmittance, DiscreteBodyIsPassive)
 {
-    // Re Y_discrete > 0 at every bin: the discretised body can only absorb energy from the string.
+    // Re Y_discrete > 0 at every bin: the discretised body can only absorb energy from the string. Read off
+    // the bank's own transfer function (its rounded poles, evaluated in double): the single-precision
+    // impulse response's DFT has a rounding floor of ~1e-8 s/kg, where the true Re Y is smallest.
     for (const std::string name : {"cello", "violin"})
     {
         const auto& m = measured(name);
         double minRe = 1e300;
-        for (std::size_t i = 1; i < m.spectrum.size(); ++i)
-            minRe = std::min(minRe, m.spectrum[i].real());
+        for (std::size_t i = expectedStride; i < m.expected.size(); i += expectedStride)
+            minRe = std::min(minRe, m.expected[i].real());
         std::printf("[%s] min Re Y_discrete over (0, Nyquist): %.3e s/kg\n", name.c_str(), minRe);
         EXPECT_GT(minRe, 0.0) << name;
     }

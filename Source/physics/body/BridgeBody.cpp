@@ -24,6 +24,7 @@ void BridgeBody::configure(const BodyParameters& body, double sampleRate, double
         gain_.push_back(0.0); // silent padding: never driven, so its state stays zero
     }
     bank_.configure(specs, sampleRate);
+    gainIn_.assign(gain_.begin(), gain_.end());
     for (auto* o : {&u_, &ud_, &udd_})
         o->assign(bank_.size());
     U0_ = U1_ = U2_ = 0.0;
@@ -32,9 +33,9 @@ void BridgeBody::configure(const BodyParameters& body, double sampleRate, double
         const auto rd = 2.0 * bank_.residue(j, ModalOutput::Displacement);
         const auto rv = 2.0 * bank_.residue(j, ModalOutput::Velocity);
         const auto ra = 2.0 * bank_.residue(j, ModalOutput::Acceleration);
-        u_.re[j] = rd.real(), u_.im[j] = rd.imag();
-        ud_.re[j] = rv.real(), ud_.im[j] = rv.imag();
-        udd_.re[j] = ra.real(), udd_.im[j] = ra.imag();
+        u_.set(j, rd);
+        ud_.set(j, rv);
+        udd_.set(j, ra);
         U0_ += bank_.direct(j, ModalOutput::Displacement) * gain_[j];
         U1_ += bank_.direct(j, ModalOutput::Velocity) * gain_[j];
         U2_ += bank_.direct(j, ModalOutput::Acceleration) * gain_[j];
@@ -53,7 +54,7 @@ void BridgeBody::advance(double bridgeForce) noexcept
     lastForce_ = bridgeForce;
     if (bank_.size() == 0)
         return;
-    const ThreeSums s = advanceOneInputThreeOutputs(bank_, gain_.data(), bridgeForce, u_, ud_, udd_);
+    const ThreeSums s = advanceOneInputThreeOutputs(bank_, gainIn_.data(), bridgeForce, u_, ud_, udd_);
     uh_ = s.first, udh_ = s.second, uddh_ = s.third;
 }
 

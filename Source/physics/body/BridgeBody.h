@@ -38,7 +38,8 @@ class BridgeBody
 
   private:
     ModalBank bank_;
-    std::vector<double> gain_; ///< 1/m_k, 0 for padding
+    std::vector<double> gain_;      ///< 1/m_k, 0 for padding
+    std::vector<ModalReal> gainIn_; ///< gain_ in the modal kernels' number type
     OutputWeights u_, ud_, udd_;
     double uh_ = 0, udh_ = 0, uddh_ = 0;
     double U0_ = 0, U1_ = 0, U2_ = 0;

@@ -13,7 +13,7 @@ void ModalBank::configure(const std::vector<ModeSpec>& modes, double sampleRate)
     T_ = 1.0 / sampleRate;
     const auto n = modes.size();
     for (auto* v : {&pRe, &pIm, &wRe, &wIm})
-        v->assign(n, 0.0);
+        v->assign(n, ModalReal(0));
     s.assign(n, {});
     for (std::size_t i = 0; i < n; ++i)
     {
@@ -36,8 +36,8 @@ void ModalBank::setPole(int n, const ModeSpec& spec) noexcept
     const double omegaD = omega * std::sqrt(std::max(1e-12, 1.0 - 0.25 * spec.lossFactor * spec.lossFactor));
     const std::complex<double> pole(-sigma, omegaD);
     const std::complex<double> p = std::exp(pole * T_);
-    pRe[n] = p.real();
-    pIm[n] = p.imag();
+    pRe[n] = static_cast<ModalReal>(p.real());
+    pIm[n] = static_cast<ModalReal>(p.imag());
     s[n] = pole;
 }
 
@@ -45,7 +45,7 @@ void ModalBank::reset() noexcept
 {
     for (auto* v : {&wRe, &wIm})
         for (auto& x : *v)
-            x = 0.0;
+            x = ModalReal(0);
 }
 
 std::complex<double> ModalBank::residue(int n, ModalOutput kind) const noexcept

@@ -21,6 +21,12 @@
 namespace rosin::physics
 {
 
+/// The number type of the modal state, poles, input gains and output weights: the per-sample updates run in
+/// it, so single precision puts twice as many modes in each vector instruction. The coefficients of the
+/// junction solve (residues, direct terms) stay double; a direct term is computed from the rounded pole, so
+/// every output keeps its exact DC gain.
+using ModalReal = float;
+
 /// What a mode output measures.
 enum class ModalOutput
 {
@@ -59,8 +65,8 @@ class ModalBank
     double value(int n, ModalOutput kind, double x) const noexcept;
 
     // Split arrays (public for the kernels; treat as read-only outside ModalKernels).
-    std::vector<double> pRe, pIm;        ///< digital pole p
-    std::vector<double> wRe, wIm;        ///< state w~
+    std::vector<ModalReal> pRe, pIm;     ///< digital pole p
+    std::vector<ModalReal> wRe, wIm;     ///< state w~
     std::vector<std::complex<double>> s; ///< continuous pole (upper half plane)
 
   private:

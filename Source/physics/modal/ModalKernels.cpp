@@ -12,27 +12,28 @@ namespace rosin::physics
 {
 
 ROSIN_VECTOR_CLONES
-TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const double* gainA, double a, const double* gainB,
+TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const ModalReal* gainA, double a, const ModalReal* gainB,
                                    double b, const OutputWeights& o1, const OutputWeights& o2) noexcept
 {
     const int n = bank.size();
-    double* __restrict wr = bank.wRe.data();
-    double* __restrict wi = bank.wIm.data();
-    const double* __restrict pr = bank.pRe.data();
-    const double* __restrict pi = bank.pIm.data();
-    const double T = bank.timeStep();
-    const double* __restrict o1r = o1.re.data();
-    const double* __restrict o1i = o1.im.data();
-    const double* __restrict o2r = o2.re.data();
-    const double* __restrict o2i = o2.im.data();
-    double s1 = 0.0, s2 = 0.0;
+    ModalReal* __restrict wr = bank.wRe.data();
+    ModalReal* __restrict wi = bank.wIm.data();
+    const ModalReal* __restrict pr = bank.pRe.data();
+    const ModalReal* __restrict pi = bank.pIm.data();
+    const auto T = static_cast<ModalReal>(bank.timeStep());
+    const auto fa = static_cast<ModalReal>(a), fb = static_cast<ModalReal>(b);
+    const ModalReal* __restrict o1r = o1.re.data();
+    const ModalReal* __restrict o1i = o1.im.data();
+    const ModalReal* __restrict o2r = o2.re.data();
+    const ModalReal* __restrict o2i = o2.im.data();
+    ModalReal s1 = 0, s2 = 0;
 #pragma omp simd reduction(+ : s1, s2)
     for (int k = 0; k < n; ++k)
     {
-        const double x = gainA[k] * a + gainB[k] * b;
-        const double kicked = wr[k] + T * x; // w~[k+1] = p (w~[k] + T x[k])
-        const double nr = pr[k] * kicked - pi[k] * wi[k];
-        const double ni = pr[k] * wi[k] + pi[k] * kicked;
+        const ModalReal x = gainA[k] * fa + gainB[k] * fb;
+        const ModalReal kicked = wr[k] + T * x; // w~[k+1] = p (w~[k] + T x[k])
+        const ModalReal nr = pr[k] * kicked - pi[k] * wi[k];
+        const ModalReal ni = pr[k] * wi[k] + pi[k] * kicked;
         wr[k] = nr;
         wi[k] = ni;
         s1 += o1r[k] * nr - o1i[k] * ni;
@@ -42,25 +43,26 @@ TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const double* gainA, double 
 }
 
 ROSIN_VECTOR_CLONES
-double advanceOneInputOneOutput(ModalBank& bank, const double* gain, double a,
+double advanceOneInputOneOutput(ModalBank& bank, const ModalReal* gain, double a,
                                 const OutputWeights& o1) noexcept
 {
     const int n = bank.size();
-    double* __restrict wr = bank.wRe.data();
-    double* __restrict wi = bank.wIm.data();
-    const double* __restrict pr = bank.pRe.data();
-    const double* __restrict pi = bank.pIm.data();
-    const double T = bank.timeStep();
-    const double* __restrict o1r = o1.re.data();
-    const double* __restrict o1i = o1.im.data();
-    double s1 = 0.0;
+    ModalReal* __restrict wr = bank.wRe.data();
+    ModalReal* __restrict wi = bank.wIm.data();
+    const ModalReal* __restrict pr = bank.pRe.data();
+    const ModalReal* __restrict pi = bank.pIm.data();
+    const auto T = static_cast<ModalReal>(bank.timeStep());
+    const auto fa = static_cast<ModalReal>(a);
+    const ModalReal* __restrict o1r = o1.re.data();
+    const ModalReal* __restrict o1i = o1.im.data();
+    ModalReal s1 = 0;
 #pragma omp simd reduction(+ : s1)
     for (int k = 0; k < n; ++k)
     {
-        const double x = gain[k] * a;
-        const double kicked = wr[k] + T * x; // w~[k+1] = p (w~[k] + T x[k])
-        const double nr = pr[k] * kicked - pi[k] * wi[k];
-        const double ni = pr[k] * wi[k] + pi[k] * kicked;
+        const ModalReal x = gain[k] * fa;
+        const ModalReal kicked = wr[k] + T * x; // w~[k+1] = p (w~[k] + T x[k])
+        const ModalReal nr = pr[k] * kicked - pi[k] * wi[k];
+        const ModalReal ni = pr[k] * wi[k] + pi[k] * kicked;
         wr[k] = nr;
         wi[k] = ni;
         s1 += o1r[k] * nr - o1i[k] * ni;
@@ -69,29 +71,31 @@ double advanceOneInputOneOutput(ModalBank& bank, const double* gain, double a,
 }
 
 ROSIN_VECTOR_CLONES
-ThreeSums advanceOneInputThreeOutputs(ModalBank& bank, const double* gain, double a, const OutputWeights& o1,
-                                      const OutputWeights& o2, const OutputWeights& o3) noexcept
+ThreeSums advanceOneInputThreeOutputs(ModalBank& bank, const ModalReal* gain, double a,
+                                      const OutputWeights& o1, const OutputWeights& o2,
+                                      const OutputWeights& o3) noexcept
 {
     const int n = bank.size();
-    double* __restrict wr = bank.wRe.data();
-    double* __restrict wi = bank.wIm.data();
-    const double* __restrict pr = bank.pRe.data();
-    const double* __restrict pi = bank.pIm.data();
-    const double T = bank.timeStep();
-    const double* __restrict o1r = o1.re.data();
-    const double* __restrict o1i = o1.im.data();
-    const double* __restrict o2r = o2.re.data();
-    const double* __restrict o2i = o2.im.data();
-    const double* __restrict o3r = o3.re.data();
-    const double* __restrict o3i = o3.im.data();
-    double s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    ModalReal* __restrict wr = bank.wRe.data();
+    ModalReal* __restrict wi = bank.wIm.data();
+    const ModalReal* __restrict pr = bank.pRe.data();
+    const ModalReal* __restrict pi = bank.pIm.data();
+    const auto T = static_cast<ModalReal>(bank.timeStep());
+    const auto fa = static_cast<ModalReal>(a);
+    const ModalReal* __restrict o1r = o1.re.data();
+    const ModalReal* __restrict o1i = o1.im.data();
+    const ModalReal* __restrict o2r = o2.re.data();
+    const ModalReal* __restrict o2i = o2.im.data();
+    const ModalReal* __restrict o3r = o3.re.data();
+    const ModalReal* __restrict o3i = o3.im.data();
+    ModalReal s1 = 0, s2 = 0, s3 = 0;
 #pragma omp simd reduction(+ : s1, s2, s3)
     for (int k = 0; k < n; ++k)
     {
-        const double x = gain[k] * a;
-        const double kicked = wr[k] + T * x; // w~[k+1] = p (w~[k] + T x[k])
-        const double nr = pr[k] * kicked - pi[k] * wi[k];
-        const double ni = pr[k] * wi[k] + pi[k] * kicked;
+        const ModalReal x = gain[k] * fa;
+        const ModalReal kicked = wr[k] + T * x; // w~[k+1] = p (w~[k] + T x[k])
+        const ModalReal nr = pr[k] * kicked - pi[k] * wi[k];
+        const ModalReal ni = pr[k] * wi[k] + pi[k] * kicked;
         wr[k] = nr;
         wi[k] = ni;
         s1 += o1r[k] * nr - o1i[k] * ni;

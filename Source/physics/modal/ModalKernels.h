@@ -11,8 +11,13 @@ namespace rosin::physics
 /// Output weights of one output channel: sum_n Re(o_n w_n), o_n = oRe + i oIm (usually 2 * rho_n * weight_n).
 struct OutputWeights
 {
-    std::vector<double> re, im;
-    void assign(int n) { re.assign(n, 0.0), im.assign(n, 0.0); }
+    std::vector<ModalReal> re, im;
+    void assign(int n) { re.assign(n, ModalReal(0)), im.assign(n, ModalReal(0)); }
+    void set(int n, std::complex<double> o)
+    {
+        re[n] = static_cast<ModalReal>(o.real());
+        im[n] = static_cast<ModalReal>(o.imag());
+    }
 };
 
 struct TwoSums
@@ -25,14 +30,15 @@ struct ThreeSums
 };
 
 /// x_n = gainA_n a + gainB_n b; advance; return the two output sums over the new state.
-TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const double* gainA, double a, const double* gainB,
+TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const ModalReal* gainA, double a, const ModalReal* gainB,
                                    double b, const OutputWeights& o1, const OutputWeights& o2) noexcept;
 /// x_n = gain_n a; advance; return the output sum over the new state.
-double advanceOneInputOneOutput(ModalBank& bank, const double* gain, double a,
+double advanceOneInputOneOutput(ModalBank& bank, const ModalReal* gain, double a,
                                 const OutputWeights& o1) noexcept;
 /// x_n = gain_n a; advance; return three output sums over the new state.
-ThreeSums advanceOneInputThreeOutputs(ModalBank& bank, const double* gain, double a, const OutputWeights& o1,
-                                      const OutputWeights& o2, const OutputWeights& o3) noexcept;
+ThreeSums advanceOneInputThreeOutputs(ModalBank& bank, const ModalReal* gain, double a,
+                                      const OutputWeights& o1, const OutputWeights& o2,
+                                      const OutputWeights& o3) noexcept;
 /// Sum_n Re(o_n w_n) over the current state without advancing.
 double sumOutput(const ModalBank& bank, const OutputWeights& o) noexcept;
 

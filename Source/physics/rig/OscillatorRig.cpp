@@ -22,11 +22,12 @@ void OscillatorRig::prepare(const OscillatorRigParameters& rig, std::unique_ptr<
     // R/(2m).
     mode_.configure({ModeSpec{rig.angularFrequency(), 1.0 / rig.qualityFactor}}, sampleRate);
     gain_ = 1.0 / rig.modalMass;
+    gainIn_ = static_cast<ModalReal>(gain_);
     auto weights = [&](OutputWeights& o, ModalOutput kind)
     {
         o.assign(1);
         const auto r = 2.0 * mode_.residue(0, kind);
-        o.re[0] = r.real(), o.im[0] = r.imag();
+        o.set(0, r);
     };
     weights(xWeights_, ModalOutput::Displacement);
     weights(vWeights_, ModalOutput::Velocity);
@@ -76,7 +77,7 @@ RigSample OscillatorRig::step(const RigInput& in) noexcept
     out.contactTemperature = friction_->contactTemperature();
     out.sticking = s.sticking;
 
-    const ThreeSums next = advanceOneInputThreeOutputs(mode_, &gain_, f, xWeights_, vWeights_, aWeights_);
+    const ThreeSums next = advanceOneInputThreeOutputs(mode_, &gainIn_, f, xWeights_, vWeights_, aWeights_);
     xHistory_ = next.first, vHistory_ = next.second, aHistory_ = next.third;
     previousForce_ = f;
     // A runaway is reset rather than heard (as BowedStringVoice does): no rig of this kind reaches 1e3 m/s.

@@ -78,6 +78,7 @@ class OscillatorRig
     ModalBank mode_;
     OutputWeights xWeights_, vWeights_, aWeights_;
     double gain_ = 1.0;                                 ///< 1/m: the mode's unit input is f/m
+    ModalReal gainIn_ = 1.0f;                           ///< gain_ in the modal kernels' number type
     double xDirect_ = 0, vDirect_ = 0, aDirect_ = 0;    ///< direct terms per newton
     double xHistory_ = 0, vHistory_ = 0, aHistory_ = 0; ///< outputs of the state before this sample's force
     double y0_ = 0.0;

@@ -37,6 +37,7 @@ struct BowedStringVoice::Impl
     std::vector<double> aN, bN;                  // string inputs x_n = aN f + bN (-u'')
     std::vector<double> transPhi;                // bow coupling of each transverse mode (corrected shape)
     std::vector<double> torsGain;
+    std::vector<ModalReal> aIn, bIn, torsIn; // aN, bN, torsGain in the modal kernels' number type
     OutputWeights transVel, transAcc, torsVel;
 
     // Direct (instantaneous) coefficients of the coupled bow/bridge solve.
@@ -116,6 +117,9 @@ void BowedStringVoice::Impl::buildModes(const VoiceConfig& cfg, double fs)
     transPhi.assign(nTrans, 0.0);
     bN.assign(nTrans, 0.0);
     torsGain.assign(nTors, 0.0);
+    aIn.assign(nTrans, ModalReal(0));
+    bIn.assign(nTrans, ModalReal(0));
+    torsIn.assign(nTors, ModalReal(0));
     transVel.assign(nTrans);
     transAcc.assign(nTrans);
     torsVel.assign(nTors);
@@ -151,10 +155,12 @@ void BowedStringVoice::Impl::updateWeights()
         aN[i] = 2.0 * phi / mL;                          // bow force -> mode n
         bN[i] = 2.0 / (n * pi) * transActive[i];         // bridge acceleration -> mode n (times -u'')
         transPhi[i] = phi;
+        aIn[i] = static_cast<ModalReal>(aN[i]);
+        bIn[i] = static_cast<ModalReal>(bN[i]);
         const auto rv = 2.0 * phi * trans.residue(i, ModalOutput::Velocity);
         const auto ra = 2.0 * c * trans.residue(i, ModalOutput::Acceleration);
-        transVel.re[i] = rv.real(), transVel.im[i] = rv.imag();
-        transAcc.re[i] = ra.real(), transAcc.im[i] = ra.imag();
+        transVel.set(i, rv);
+        transAcc.set(i, ra);
         const double V = trans.direct(i, ModalOutput::Velocity);
         const double E = trans.direct(i, ModalOutput::Acceleration);
         A1 += c * E * aN[i];
@@ -168,8 +174,9 @@ void BowedStringVoice::Impl::updateWeights()
     {
         const double phi = std::sin((i + 1) * pi * beta) * torsActive[i] * staticCorrection(tors, i, T);
         torsGain[i] = 2.0 * phi / (mt * L);
+        torsIn[i] = static_cast<ModalReal>(torsGain[i]);
         const auto rv = 2.0 * phi * tors.residue(i, ModalOutput::Velocity);
-        torsVel.re[i] = rv.real(), torsVel.im[i] = rv.imag();
+        torsVel.set(i, rv);
         Ya += phi * tors.direct(i, ModalOutput::Velocity) * torsGain[i];
     }
     U0 = body->displacementDirect();
@@ -317,10 +324,10 @@ VoiceSample BowedStringVoice::finishStep(double totalBridgeForce) noexcept
     const double udd = s.body->accelerationHistory() + s.U2 * G;
 
     const TwoSums st =
-        advanceTwoInputsTwoOutputs(s.trans, s.aN.data(), f, s.bN.data(), -udd, s.transVel, s.transAcc);
+        advanceTwoInputsTwoOutputs(s.trans, s.aIn.data(), f, s.bIn.data(), -udd, s.transVel, s.transAcc);
     s.Sv = st.first;
     s.Sa = st.second;
-    s.Tv = s.tors.size() ? advanceOneInputOneOutput(s.tors, s.torsGain.data(), f, s.torsVel) : 0.0;
+    s.Tv = s.tors.size() ? advanceOneInputOneOutput(s.tors, s.torsIn.data(), f, s.torsVel) : 0.0;
     s.lastF = f, s.lastBridge = F, s.lastUdd = udd;
     s.previousFriction = f;
 
