@@ -40,8 +40,8 @@ const std::vector<std::string> kValueOptions = {"--preset",         "--friction"
                                                 "--shard",          "--out",         "--layer-thickness",
                                                 "--contact-radius", "--contact"};
 const std::vector<std::string> kFlags = {
-    "--help",         "-h",           "--mpi",         "--no-figures", "--no-progress", "--finger-damping",
-    "--rigid-bridge", "--no-torsion", "--no-stiffness"};
+    "--help",         "-h",           "--mpi",          "--no-figures", "--no-progress", "--finger-damping",
+    "--rigid-bridge", "--no-torsion", "--no-stiffness", "--full-trials"};
 
 [[noreturn]] void bad(const std::string& option, const std::string& expected, const std::string& value)
 {
@@ -243,6 +243,12 @@ void trial(const Values& v, scan::ScanSpec& s)
         s.trialSeconds = number("--duration", *d, kDuration);
     if (const auto* r = v.get("--ramp"))
         s.rampSeconds = number("--ramp", *r, kRamp);
+    if (v.has("--full-trials"))
+    {
+        if (s.kind != ScanKind::Guettler)
+            bad("--full-trials", "a guettler scan (schelleng trials always run whole)", "schelleng");
+        s.endAfterTransient = false;
+    }
     if (s.kind == ScanKind::Schelleng && !(s.rampSeconds < s.trialSeconds))
         bad("--ramp",
             "a ramp shorter than the trial (--duration " + gesture::formatNumber(s.trialSeconds) + " s)",

@@ -57,3 +57,16 @@ TEST(SpecJson, BadFilesAreReportedWithTheField)
         EXPECT_EQ(e.field(), "forces");
     }
 }
+
+// Spec files from before trials could end early describe whole trials, and are read as such.
+TEST(SpecJson, OlderFilesWithoutTheEarlyEndRunWholeTrials)
+{
+    ScanSpec s = defaultSpec(ScanKind::Guettler);
+    ASSERT_TRUE(s.endAfterTransient);
+    nlohmann::json j = specToJson(s);
+    EXPECT_TRUE(specFromJson(j, "new.json").endAfterTransient);
+    j.erase("endAfterTransient");
+    EXPECT_FALSE(specFromJson(j, "old.json").endAfterTransient);
+    s.endAfterTransient = false;
+    EXPECT_EQ(specText(specFromText(specText(s), "x.json")), specText(s));
+}

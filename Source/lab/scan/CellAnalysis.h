@@ -2,7 +2,9 @@
 // From one trial's per-sample output to its scan.csv row, with the lab's analyses (physics reference 7):
 //  * the first slip from the solver's state (lab::firstSlipFromState): mu_s, the jump, its time;
 //  * the steady regime over the end of the trial (lab::classifyFromVoice, flybacks only): Guettler the last
-//    20 nominal periods, Schelleng the second half of the time after the ramp (at least 20 periods);
+//    20 nominal periods, Schelleng the second half of the time after the ramp (at least 20 periods). A
+//    Guettler trial normally ends with its transient window (ScanSpec::endAfterTransient), so its regime is
+//    that of the window's last 20 periods, the motion the transient was judged to reach or miss;
 //  * the transient (lab::measureTransient on the full flybacks, reference 7.3: 5 % period tolerance, a run
 //    of >= 5 Helmholtz periods lasting to the end of the analysed window, cap 20 periods). The window is the
 //    first 40 periods after the first slip (see addTransient); fewer than 20 periods of trial after the first

@@ -33,6 +33,11 @@ struct ScanSpec
     /// Schelleng: the bow reaches its speed with constant acceleration over this time (s); unused (0) for
     /// Guettler, whose bow accelerates for the whole trial.
     double rampSeconds = 0.0;
+    /// Guettler: end each trial once its transient is decided, 2 x cap periods (plus the 10 % period
+    /// tolerance) after the first full flyback, instead of running all trialSeconds (CellRunner). The first
+    /// slip and the transient come out the same; the regime is then that of the last 20 periods of the
+    /// transient window. false (`--full-trials`, and spec files written before this existed): whole trials.
+    bool endAfterTransient = true;
     std::vector<double> betas;
     std::vector<double> forces; ///< N
     std::vector<double> second; ///< accelerations, m/s^2 (Guettler), or bow speeds, m/s (Schelleng)

@@ -142,6 +142,7 @@ json specToJson(const ScanSpec& s)
             {"sampleRate", s.sampleRate},
             {"trialSeconds", s.trialSeconds},
             {"rampSeconds", s.rampSeconds},
+            {"endAfterTransient", s.endAfterTransient},
             {"betas", s.betas},
             {"forces", s.forces},
             {s.kind == ScanKind::Guettler ? "accelerations" : "bowSpeeds", s.second}};
@@ -168,6 +169,8 @@ ScanSpec specFromJson(const json& j, const std::string& file)
     s.sampleRate = r.get<double>("sampleRate");
     s.trialSeconds = r.get<double>("trialSeconds");
     s.rampSeconds = r.get<double>("rampSeconds");
+    // Absent in files written before trials could end early: those scans ran whole trials.
+    s.endAfterTransient = j.contains("endAfterTransient") && r.get<bool>("endAfterTransient");
     s.betas = r.get<std::vector<double>>("betas");
     s.forces = r.get<std::vector<double>>("forces");
     s.second = r.get<std::vector<double>>(s.kind == ScanKind::Guettler ? "accelerations" : "bowSpeeds");
