@@ -1,7 +1,9 @@
 #include "CellRunner.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 
 #include "CellAnalysis.h"
 #include "TrialProtocol.h"
@@ -33,42 +35,121 @@ std::size_t transientWindowSamples(double nominalPeriod)
     const double longest = nominalPeriod * (1.0 + lab::regime_thresholds::kPeriodTolerance);
     return static_cast<std::size_t>(std::ceil(2.0 * kTransientCapPeriods * longest)) + 1;
 }
+
+std::vector<std::unique_ptr<physics::FrictionLaw>> laneLaws(const ScanSpec& spec)
+{
+    std::vector<std::unique_ptr<physics::FrictionLaw>> laws;
+    for (int l = 0; l < physics::kLanes; ++l)
+    {
+        laws.push_back(frictionLaw(spec.model));
+        laws.back()->prepare(spec.sampleRate);
+    }
+    return laws;
+}
 } // namespace
 
 CellRunner::CellRunner(const ScanSpec& spec) : spec_(spec)
 {
     voice_.prepare(voiceConfig(spec.model), frictionLaw(spec.model), spec.sampleRate);
+    lanes_.prepare(voice_, laneLaws(spec));
     periodSamples_ = spec.sampleRate / spec.model.string.fundamental();
 }
 
-CellResult CellRunner::run(std::size_t cell)
+void CellRunner::useBeta(double beta)
 {
-    const CellSettings settings = cellSettings(spec_, cell);
-    const TrialProtocol protocol(spec_, settings);
-    voice_.reset();
-    samples_.clear();
-    samples_.reserve(protocol.samples());
-    std::size_t end = protocol.samples();
-    bool looking = spec_.kind == ScanKind::Guettler && spec_.endAfterTransient;
-    const auto checkInterval = static_cast<std::size_t>(std::ceil(kFlybackCheckPeriods * periodSamples_));
-    for (std::size_t k = 0; k < end; ++k)
+    if (beta == lanesBeta_)
     {
-        samples_.push_back(voice_.step(protocol.at(k)));
-        if (!looking || (k + 1) % checkInterval != 0)
-            continue;
-        if (const auto onset = firstFullFlyback(samples_, settings.beta))
-        {
-            end = std::min(end, *onset + transientWindowSamples(periodSamples_));
-            looking = false;
-        }
+        lanes_.reset();
+        return;
     }
-    TrialContext context;
-    context.kind = spec_.kind;
-    context.cell = settings;
-    context.sampleRate = spec_.sampleRate;
-    context.periodSamples = periodSamples_;
-    context.rampEnd = protocol.rampEnd();
-    return analyseTrial(samples_, context);
+    voice_.setBowPosition(beta, 1.0);
+    lanes_.retune(voice_);
+    lanesBeta_ = beta;
+}
+
+std::vector<CellResult> CellRunner::run(const std::vector<std::size_t>& cells)
+{
+    const std::size_t n = cells.size();
+    if (n == 0 || n > kBatch)
+        throw std::invalid_argument("CellRunner::run: 1 to " + std::to_string(kBatch) + " cells at a time");
+    std::vector<CellSettings> settings;
+    std::vector<TrialProtocol> protocols;
+    for (const std::size_t cell : cells)
+    {
+        settings.push_back(cellSettings(spec_, cell));
+        protocols.emplace_back(spec_, settings.back());
+        if (settings.back().beta != settings.front().beta)
+            throw std::invalid_argument("CellRunner::run: the cells of a batch must share one beta");
+    }
+    useBeta(settings.front().beta);
+
+    std::array<std::size_t, physics::kLanes> end{};
+    std::array<bool, physics::kLanes> looking{};
+    for (std::size_t l = 0; l < n; ++l)
+    {
+        samples_[l].clear();
+        samples_[l].reserve(protocols[l].samples());
+        end[l] = protocols[l].samples();
+        looking[l] = spec_.kind == ScanKind::Guettler && spec_.endAfterTransient;
+    }
+    const auto checkInterval = static_cast<std::size_t>(std::ceil(kFlybackCheckPeriods * periodSamples_));
+    physics::LaneBowInput in; // lanes beyond n stay at rest
+    std::array<physics::VoiceSample, physics::kLanes> out;
+    std::size_t last = *std::max_element(end.begin(), end.begin() + n);
+    for (std::size_t k = 0; k < last; ++k)
+    {
+        for (std::size_t l = 0; l < n; ++l)
+        {
+            const physics::BowInput b = protocols[l].at(std::min(k, end[l] - 1));
+            in.bowForce[l] = b.bowForce;
+            in.bowVelocity[l] = b.bowVelocity;
+        }
+        lanes_.step(in, out);
+        bool ended = false;
+        for (std::size_t l = 0; l < n; ++l)
+        {
+            if (k >= end[l])
+                continue;
+            samples_[l].push_back(out[l]);
+            if (!looking[l] || (k + 1) % checkInterval != 0)
+                continue;
+            if (const auto onset = firstFullFlyback(samples_[l], settings[l].beta))
+            {
+                end[l] = std::min(end[l], *onset + transientWindowSamples(periodSamples_));
+                looking[l] = false;
+                ended = true;
+            }
+        }
+        if (ended)
+            last = *std::max_element(end.begin(), end.begin() + n);
+    }
+
+    std::vector<CellResult> results;
+    for (std::size_t l = 0; l < n; ++l)
+    {
+        TrialContext context;
+        context.kind = spec_.kind;
+        context.cell = settings[l];
+        context.sampleRate = spec_.sampleRate;
+        context.periodSamples = periodSamples_;
+        context.rampEnd = protocols[l].rampEnd();
+        results.push_back(analyseTrial(samples_[l], context));
+    }
+    return results;
+}
+
+std::vector<std::vector<std::size_t>> batchesOf(const ScanSpec& spec, const std::vector<std::size_t>& cells)
+{
+    std::vector<std::vector<std::size_t>> batches;
+    for (const std::size_t cell : cells)
+    {
+        const std::size_t beta = coordinatesOf(spec, cell).beta;
+        if (batches.empty() || batches.back().size() == CellRunner::kBatch ||
+            coordinatesOf(spec, batches.back().front()).beta != beta)
+            batches.emplace_back();
+        batches.back().push_back(cell);
+    }
+    return batches;
 }
 
 } // namespace rosin::scan

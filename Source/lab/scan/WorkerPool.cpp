@@ -14,9 +14,9 @@ unsigned defaultThreadCount() noexcept
 }
 
 WorkerPool::WorkerPool(const ScanSpec& spec, std::vector<std::size_t> cells, unsigned threads)
-    : cells_(std::move(cells))
+    : batches_(batchesOf(spec, cells))
 {
-    const std::size_t n = cells_.empty() ? 0 : std::clamp<std::size_t>(threads, 1, cells_.size());
+    const std::size_t n = batches_.empty() ? 0 : std::clamp<std::size_t>(threads, 1, batches_.size());
     running_ = n;
     for (std::size_t i = 0; i < n; ++i)
         threads_.emplace_back([this, &spec] { work(spec); });
@@ -34,11 +34,14 @@ void WorkerPool::work(const ScanSpec& spec)
     try
     {
         CellRunner runner(spec); // prepares this thread's voice (a thermal law calibrates: ~25 ms)
-        for (std::size_t i = next_++; i < cells_.size() && !stopping_; i = next_++)
+        for (std::size_t i = next_++; i < batches_.size() && !stopping_; i = next_++)
         {
-            FinishedCell finished{cells_[i], formatRow(runner.run(cells_[i]))};
+            std::vector<FinishedCell> finished;
+            for (const CellResult& result : runner.run(batches_[i]))
+                finished.push_back({result.cell, formatRow(result)});
             const std::lock_guard lock(mutex_);
-            done_.push_back(std::move(finished));
+            for (auto& row : finished)
+                done_.push_back(std::move(row));
             ready_.notify_all();
         }
     }

@@ -36,6 +36,13 @@ class BridgeBody
     double velocityAtLastStep() const noexcept;
     double energyAtLastStep() const noexcept;
 
+    // The discrete system, for engines that advance copies of this body (VoiceLanes).
+    const ModalBank& bank() const noexcept { return bank_; }
+    const ModalReal* inputGains() const noexcept { return gainIn_.data(); } ///< 1/m_k, 0 for padding
+    const OutputWeights& displacementWeights() const noexcept { return u_; }
+    const OutputWeights& velocityWeights() const noexcept { return ud_; }
+    const OutputWeights& accelerationWeights() const noexcept { return udd_; }
+
   private:
     ModalBank bank_;
     std::vector<double> gain_;      ///< 1/m_k, 0 for padding

@@ -59,6 +59,7 @@ struct BowedStringVoice::Impl
     void computeTorsSpecs();
     void updateWeights();
     void applyControl(const BowInput& in);
+    void setPosition(double newBeta, double finger);
     void clearState();
     double energy() const;
 };
@@ -263,10 +264,14 @@ VoiceSample BowedStringVoice::step(const BowInput& in) noexcept
 
 void BowedStringVoice::Impl::applyControl(const BowInput& in)
 {
-    const double newBeta = std::clamp(in.beta, 0.01, 0.5);
-    const double finger = std::clamp(in.fingerRatio, 0.1, 1.0);
     const bool controlTick = (sampleCounter++ % kControlInterval) == 0;
-    if (controlTick && finger != fingerRatio)
+    if (controlTick)
+        setPosition(std::clamp(in.beta, 0.01, 0.5), std::clamp(in.fingerRatio, 0.1, 1.0));
+}
+
+void BowedStringVoice::Impl::setPosition(double newBeta, double finger)
+{
+    if (finger != fingerRatio)
     {
         fingerRatio = finger;
         length = openLength * finger;
@@ -278,11 +283,37 @@ void BowedStringVoice::Impl::applyControl(const BowInput& in)
         beta = newBeta;
         updateWeights();
     }
-    else if (controlTick && newBeta != beta)
+    else if (newBeta != beta)
     {
         beta = newBeta;
         updateWeights();
     }
+}
+
+void BowedStringVoice::setBowPosition(double beta, double fingerRatio)
+{
+    impl_->setPosition(std::clamp(beta, 0.01, 0.5), std::clamp(fingerRatio, 0.1, 1.0));
+}
+
+VoiceCoefficients BowedStringVoice::coefficients() const noexcept
+{
+    const auto& s = *impl_;
+    VoiceCoefficients c;
+    c.transverse = &s.trans;
+    c.torsional = &s.tors;
+    c.transverseForceGain = s.aIn.data();
+    c.transverseBridgeGain = s.bIn.data();
+    c.torsionalForceGain = s.torsIn.data();
+    c.transverseVelocity = &s.transVel;
+    c.transverseAcceleration = &s.transAcc;
+    c.torsionalVelocity = &s.torsVel;
+    c.body = s.body;
+    c.beta = s.beta;
+    c.tensionPerLength = s.string.tension / s.length;
+    c.M3 = s.M3, c.D = s.D, c.A1 = s.A1, c.Bv = s.Bv;
+    c.U0 = s.U0, c.U1 = s.U1, c.U2 = s.U2;
+    c.y0 = s.y0, c.bandCorrection = s.bandCorrection, c.bridgeCoupling = s.bridgeCoupling;
+    return c;
 }
 
 double BowedStringVoice::solveJunction(const BowInput& in, double otherStringsForce) noexcept

@@ -14,12 +14,32 @@
 #include <vector>
 
 #include "../friction/FrictionLaw.h"
+#include "../modal/ModalKernels.h"
 #include "VoiceConfig.h"
 
 namespace rosin::physics
 {
 
 class BridgeBody;
+
+/// A voice's discrete system at its current bow position: what an engine that advances copies of the voice
+/// needs (VoiceLanes). Pointers into the voice: valid until its next prepare(), bow-position or finger
+/// change.
+struct VoiceCoefficients
+{
+    const ModalBank* transverse = nullptr;
+    const ModalBank* torsional = nullptr;
+    const ModalReal* transverseForceGain = nullptr;  ///< a_n: bow force -> transverse mode n
+    const ModalReal* transverseBridgeGain = nullptr; ///< b_n: -u'' -> transverse mode n
+    const ModalReal* torsionalForceGain = nullptr;
+    const OutputWeights* transverseVelocity = nullptr;     ///< bow-point velocity history Sv
+    const OutputWeights* transverseAcceleration = nullptr; ///< bridge-force history Sa
+    const OutputWeights* torsionalVelocity = nullptr;      ///< Tv
+    const BridgeBody* body = nullptr;
+    // The per-sample solve (BowedStringVoice.cpp): F = R - c G, v = v_h + y0 f.
+    double beta = 0.1, tensionPerLength = 0.0, M3 = 0.0, D = 1.0, A1 = 0.0, Bv = 0.0;
+    double U0 = 0.0, U1 = 0.0, U2 = 0.0, y0 = 1.0, bandCorrection = 0.0, bridgeCoupling = 0.0;
+};
 
 /// Per-sample bow input, already smoothed (see BowGesture), SI units.
 struct BowInput
@@ -71,6 +91,12 @@ class BowedStringVoice
     double bowPointDisplacement() const noexcept;
     const FrictionLaw& friction() const noexcept { return *friction_; }
     const VoiceConfig& config() const noexcept { return config_; }
+
+    /// Applies a bow position and finger ratio now (step() applies them at its next control tick). Off the
+    /// audio thread.
+    void setBowPosition(double beta, double fingerRatio);
+    /// The discrete system at the current bow position (see VoiceCoefficients).
+    VoiceCoefficients coefficients() const noexcept;
 
     /// Put this string on a body owned elsewhere (BowedInstrument), or back on its own with nullptr. The
     /// voice then reads that body's histories and no longer advances it: the owner advances it once per

@@ -1,0 +1,117 @@
+#include "LaneModes.h"
+
+#include <algorithm>
+#include <cstring>
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(ROSIN_NO_MULTIVERSION)
+#define ROSIN_LANE_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define ROSIN_LANE_CLONES
+#endif
+
+namespace rosin::physics
+{
+
+void LaneModes::assign(const ModalBank& bank, const ModalReal* a, const ModalReal* b, const OutputWeights* o1,
+                       const OutputWeights* o2, const OutputWeights* o3)
+{
+    modes = bank.size();
+    pRe = bank.pRe;
+    pIm = bank.pIm;
+    const auto T = static_cast<ModalReal>(bank.timeStep());
+    gainA.assign(modes, ModalReal(0));
+    gainB.assign(modes, ModalReal(0));
+    for (int k = 0; k < modes; ++k)
+    {
+        gainA[k] = T * a[k];
+        gainB[k] = b != nullptr ? T * b[k] : ModalReal(0);
+    }
+    out1 = o1 != nullptr ? *o1 : OutputWeights{};
+    out2 = o2 != nullptr ? *o2 : OutputWeights{};
+    out3 = o3 != nullptr ? *o3 : OutputWeights{};
+    w.assign(modes, ModeState{});
+}
+
+void LaneModes::reset() noexcept
+{
+    std::fill(w.begin(), w.end(), ModeState{});
+}
+
+void LaneModes::resetLane(int lane) noexcept
+{
+    for (int k = 0; k < modes; ++k)
+        w[k].re[lane] = w[k].im[lane] = ModalReal(0);
+}
+
+namespace
+{
+// Four modes per pass, each with its own accumulators, so consecutive modes do not wait on one sum. Banks are
+// padded to whole vectors of modes (multiples of 8), so the passes need no tail.
+constexpr int kUnroll = 4;
+
+// `inputs` gains (1 or 2) and `outputs` weights (1 to 3): w~ <- p (w~ + x) per mode, outputs summed per lane.
+template <int inputs, int outputs>
+inline void advance(LaneModes& bank, const LaneValues& inA, const LaneValues& inB, LaneValues* sums) noexcept
+{
+    // Copied in and out with memcpy: no function takes or returns a vector, so no ABI depends on AVX.
+    LaneVector a, b;
+    std::memcpy(&a, inA.v, sizeof a);
+    std::memcpy(&b, inB.v, sizeof b);
+    const OutputWeights* o[3] = {&bank.out1, &bank.out2, &bank.out3};
+    LaneVector partial[outputs][kUnroll] = {};
+    ModeState* __restrict w = bank.w.data();
+    for (int k0 = 0; k0 < bank.modes; k0 += kUnroll)
+    {
+#pragma GCC unroll 4
+        for (int j = 0; j < kUnroll; ++j)
+        {
+            const int k = k0 + j;
+            const ModalReal pr = bank.pRe[k], pi = bank.pIm[k];
+            LaneVector kicked = w[k].re + bank.gainA[k] * a;
+            if constexpr (inputs == 2)
+                kicked += bank.gainB[k] * b;
+            const LaneVector nr = pr * kicked - pi * w[k].im;
+            const LaneVector ni = pr * w[k].im + pi * kicked;
+            w[k].re = nr;
+            w[k].im = ni;
+#pragma GCC unroll 3
+            for (int m = 0; m < outputs; ++m)
+                partial[m][j] += o[m]->re[k] * nr - o[m]->im[k] * ni;
+        }
+    }
+    for (int m = 0; m < outputs; ++m)
+    {
+        const LaneVector total = (partial[m][0] + partial[m][1]) + (partial[m][2] + partial[m][3]);
+        std::memcpy(sums[m].v, &total, sizeof total);
+    }
+}
+} // namespace
+
+ROSIN_LANE_CLONES
+void advanceTwoInputsTwoOutputs(LaneModes& bank, const LaneValues& a, const LaneValues& b, LaneValues& s1,
+                                LaneValues& s2) noexcept
+{
+    LaneValues sums[2];
+    advance<2, 2>(bank, a, b, sums);
+    s1 = sums[0];
+    s2 = sums[1];
+}
+
+ROSIN_LANE_CLONES
+void advanceOneInputOneOutput(LaneModes& bank, const LaneValues& a, LaneValues& s1) noexcept
+{
+    advance<1, 1>(bank, a, a, &s1);
+}
+
+ROSIN_LANE_CLONES
+void advanceOneInputThreeOutputs(LaneModes& bank, const LaneValues& a, LaneValues& s1, LaneValues& s2,
+                                 LaneValues& s3) noexcept
+{
+    LaneValues sums[3];
+    advance<1, 3>(bank, a, a, sums);
+    s1 = sums[0];
+    s2 = sums[1];
+    s3 = sums[2];
+}
+
+} // namespace rosin::physics

@@ -1,0 +1,54 @@
+#pragma once
+// kLanes copies of one BowedStringVoice (same string, body and bow position) advanced together, each with its
+// own bow force, bow velocity, friction law and state: the independent trials of a scan column. The modes run
+// in SIMD lanes (LaneModes.h); the junction of each lane is the voice's own solve (BowedStringVoice.cpp,
+// single string on its own body), and each lane's friction law is a separate object, so every law and effect
+// works unchanged. A lane's samples do not depend on the other lanes.
+//
+// The modal sums are formed in another order than the voice's (mode by mode per lane rather than across
+// modes), so a lane agrees with BowedStringVoice to float rounding, not bit for bit; tests/physics checks the
+// two against each other.
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "../voice/BowedStringVoice.h"
+#include "LaneModes.h"
+
+namespace rosin::physics
+{
+
+/// Per-lane bow input for one sample (beta is the voice's, fixed at prepare()).
+struct LaneBowInput
+{
+    std::array<double, kLanes> bowForce{};    ///< N
+    std::array<double, kLanes> bowVelocity{}; ///< m/s
+};
+
+class VoiceLanes
+{
+  public:
+    /// Off the audio thread. Copies the voice's discrete system at its current bow position (set it with
+    /// BowedStringVoice::setBowPosition first) and takes one prepared friction law per lane.
+    void prepare(const BowedStringVoice& voice, std::vector<std::unique_ptr<FrictionLaw>> laws);
+    /// New coefficients for another bow position of the same voice, keeping the laws. Resets every lane.
+    void retune(const BowedStringVoice& voice);
+    /// Every lane back to rest.
+    void reset() noexcept;
+    /// Advances every lane one sample and writes each lane's output.
+    void step(const LaneBowInput& in, std::array<VoiceSample, kLanes>& out) noexcept;
+
+  private:
+    struct Histories
+    {
+        std::array<double, kLanes> Sv{}, Sa{}, Tv{}, uh{}, udh{}, uddh{}, previousFriction{};
+    };
+    void resetLane(int lane) noexcept;
+
+    VoiceCoefficients c_; ///< only its numbers are used after retune(): the pointers follow the voice
+    LaneModes trans_, tors_, body_;
+    Histories h_;
+    std::vector<std::unique_ptr<FrictionLaw>> laws_;
+};
+
+} // namespace rosin::physics
