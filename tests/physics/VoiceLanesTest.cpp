@@ -27,17 +27,6 @@ VoiceConfig galluzzoRig()
     return cfg;
 }
 
-std::vector<std::unique_ptr<FrictionLaw>> laws(FrictionModel model)
-{
-    std::vector<std::unique_ptr<FrictionLaw>> v;
-    for (int l = 0; l < kLanes; ++l)
-    {
-        v.push_back(makeFrictionLaw(model, galluzzoContact()));
-        v.back()->prepare(kRate);
-    }
-    return v;
-}
-
 double force(int lane, int variant)
 {
     return 0.5 + 0.3 * ((lane + variant) % kLanes);
@@ -77,7 +66,9 @@ class VoiceLanesAgainstVoice : public ::testing::TestWithParam<FrictionModel>
     {
         voice.prepare(galluzzoRig(), makeFrictionLaw(GetParam(), galluzzoContact()), kRate);
         voice.setBowPosition(kBeta, 1.0);
-        lanes.prepare(voice, laws(GetParam()));
+        const FrictionModel model = GetParam();
+        lanes.prepare(voice,
+                      makeLaneFriction([model] { return makeFrictionLaw(model, galluzzoContact()); }, kRate));
     }
     BowedStringVoice voice;
     VoiceLanes lanes;

@@ -36,22 +36,13 @@ std::size_t transientWindowSamples(double nominalPeriod)
     return static_cast<std::size_t>(std::ceil(2.0 * kTransientCapPeriods * longest)) + 1;
 }
 
-std::vector<std::unique_ptr<physics::FrictionLaw>> laneLaws(const ScanSpec& spec)
-{
-    std::vector<std::unique_ptr<physics::FrictionLaw>> laws;
-    for (int l = 0; l < physics::kLanes; ++l)
-    {
-        laws.push_back(frictionLaw(spec.model));
-        laws.back()->prepare(spec.sampleRate);
-    }
-    return laws;
-}
 } // namespace
 
 CellRunner::CellRunner(const ScanSpec& spec) : spec_(spec)
 {
     voice_.prepare(voiceConfig(spec.model), frictionLaw(spec.model), spec.sampleRate);
-    lanes_.prepare(voice_, laneLaws(spec));
+    lanes_.prepare(voice_,
+                   physics::makeLaneFriction([&spec] { return frictionLaw(spec.model); }, spec.sampleRate));
     periodSamples_ = spec.sampleRate / spec.model.string.fundamental();
 }
 

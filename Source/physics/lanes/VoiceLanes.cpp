@@ -8,14 +8,11 @@
 namespace rosin::physics
 {
 
-void VoiceLanes::prepare(const BowedStringVoice& voice, std::vector<std::unique_ptr<FrictionLaw>> laws)
+void VoiceLanes::prepare(const BowedStringVoice& voice, std::unique_ptr<LaneFriction> friction)
 {
-    if (laws.size() != static_cast<std::size_t>(kLanes))
-        throw std::invalid_argument("VoiceLanes::prepare: one friction law per lane is required");
-    for (const auto& law : laws)
-        if (!law)
-            throw std::invalid_argument("VoiceLanes::prepare: a lane has no friction law");
-    laws_ = std::move(laws);
+    if (!friction)
+        throw std::invalid_argument("VoiceLanes::prepare: the lanes need their friction");
+    friction_ = std::move(friction);
     retune(voice);
 }
 
@@ -37,8 +34,7 @@ void VoiceLanes::reset() noexcept
     tors_.reset();
     body_.reset();
     h_ = {};
-    for (auto& law : laws_)
-        law->reset();
+    friction_->reset();
 }
 
 void VoiceLanes::resetLane(int l) noexcept
@@ -48,30 +44,37 @@ void VoiceLanes::resetLane(int l) noexcept
     body_.resetLane(l);
     for (auto* x : {&h_.Sv, &h_.Sa, &h_.Tv, &h_.uh, &h_.udh, &h_.uddh, &h_.previousFriction})
         (*x)[l] = 0.0;
-    laws_[l]->reset();
+    friction_->resetLane(l);
 }
 
 // BowedStringVoice::step() lane by lane: solveJunction(in, 0), G = R / (1 + c), finishStep(G), body advance.
 void VoiceLanes::step(const LaneBowInput& in, std::array<VoiceSample, kLanes>& out) noexcept
 {
     const double PL = c_.tensionPerLength, beta = c_.beta;
+    LaneJunctionInput junction;
+    junction.loadSlope = 1.0 / c_.y0;
+    for (int l = 0; l < kLanes; ++l)
+    {
+        const double uddh = h_.uddh[l];
+        const double Fh = (-PL * h_.uh[l] - c_.M3 * uddh - h_.Sa[l]) / c_.D;
+        const double vh = h_.Sv[l] + h_.Tv[l] - c_.Bv * (uddh + c_.U2 * Fh) +
+                          (1.0 - beta) * (h_.udh[l] + c_.U1 * Fh) -
+                          c_.bandCorrection * h_.previousFriction[l];
+        junction.dvHistory[l] = vh - in.bowVelocity[l];
+        junction.bowForce[l] = std::max(0.0, in.bowForce[l]);
+    }
+    LaneJunctionSolution solution;
+    friction_->solve(junction, solution);
     LaneValues force, bridgeAcceleration, bridgeForce;
-    std::array<JunctionSolution, kLanes> solution;
     std::array<double, kLanes> F{};
     for (int l = 0; l < kLanes; ++l)
     {
-        const double uh = h_.uh[l], udh = h_.udh[l], uddh = h_.uddh[l];
-        const double Fh = (-PL * uh - c_.M3 * uddh - h_.Sa[l]) / c_.D;
-        const double vh = h_.Sv[l] + h_.Tv[l] - c_.Bv * (uddh + c_.U2 * Fh) +
-                          (1.0 - beta) * (udh + c_.U1 * Fh) - c_.bandCorrection * h_.previousFriction[l];
-        const double vb = in.bowVelocity[l];
-        solution[l] = laws_[l]->solve({vh - vb, 1.0 / c_.y0, std::max(0.0, in.bowForce[l])});
         const double f = solution[l].frictionForce;
-        const double R = (1.0 - beta - c_.A1) * f - PL * uh - c_.M3 * uddh - h_.Sa[l];
+        const double R = (1.0 - beta - c_.A1) * f - PL * h_.uh[l] - c_.M3 * h_.uddh[l] - h_.Sa[l];
         const double G = R / (1.0 + c_.bridgeCoupling);
         F[l] = R - c_.bridgeCoupling * G;
         force.v[l] = static_cast<ModalReal>(f);
-        bridgeAcceleration.v[l] = static_cast<ModalReal>(-(uddh + c_.U2 * G));
+        bridgeAcceleration.v[l] = static_cast<ModalReal>(-(h_.uddh[l] + c_.U2 * G));
         bridgeForce.v[l] = static_cast<ModalReal>(G);
         h_.previousFriction[l] = f;
     }
@@ -90,7 +93,7 @@ void VoiceLanes::step(const LaneBowInput& in, std::array<VoiceSample, kLanes>& o
                   vb + solution[l].dv,
                   solution[l].frictionForce,
                   vb,
-                  laws_[l]->contactTemperature(),
+                  friction_->contactTemperature(l),
                   solution[l].sticking};
         // As the voice: a runaway (non-finite or absurd) lane is reset rather than heard.
         if (!std::isfinite(F[l]) || !std::isfinite(h_.Sv[l]) || std::abs(F[l]) > 1e4)

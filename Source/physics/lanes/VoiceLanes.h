@@ -2,8 +2,8 @@
 // kLanes copies of one BowedStringVoice (same string, body and bow position) advanced together, each with its
 // own bow force, bow velocity, friction law and state: the independent trials of a scan column. The modes run
 // in SIMD lanes (LaneModes.h); the junction of each lane is the voice's own solve (BowedStringVoice.cpp,
-// single string on its own body), and each lane's friction law is a separate object, so every law and effect
-// works unchanged. A lane's samples do not depend on the other lanes.
+// single string on its own body), with the friction of all lanes in one LaneFriction (LaneFriction.h: any
+// law, one object per lane, or the plastic law lane-wise). A lane's samples do not depend on the other lanes.
 //
 // The modal sums are formed in another order than the voice's (mode by mode per lane rather than across
 // modes), so a lane agrees with BowedStringVoice to float rounding, not bit for bit; tests/physics checks the
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "../voice/BowedStringVoice.h"
+#include "LaneFriction.h"
 #include "LaneModes.h"
 
 namespace rosin::physics
@@ -29,8 +30,8 @@ class VoiceLanes
 {
   public:
     /// Off the audio thread. Copies the voice's discrete system at its current bow position (set it with
-    /// BowedStringVoice::setBowPosition first) and takes one prepared friction law per lane.
-    void prepare(const BowedStringVoice& voice, std::vector<std::unique_ptr<FrictionLaw>> laws);
+    /// BowedStringVoice::setBowPosition first) and takes the lanes' friction.
+    void prepare(const BowedStringVoice& voice, std::unique_ptr<LaneFriction> friction);
     /// New coefficients for another bow position of the same voice, keeping the laws. Resets every lane.
     void retune(const BowedStringVoice& voice);
     /// Every lane back to rest.
@@ -48,7 +49,7 @@ class VoiceLanes
     VoiceCoefficients c_; ///< only its numbers are used after retune(): the pointers follow the voice
     LaneModes trans_, tors_, body_;
     Histories h_;
-    std::vector<std::unique_ptr<FrictionLaw>> laws_;
+    std::unique_ptr<LaneFriction> friction_;
 };
 
 } // namespace rosin::physics

@@ -53,6 +53,21 @@ class HeatBalance
     static double steadyConductance(const ContactGeometry& geometry, const ThermalMaterial& material,
                                     double bowForce, double slidingSpeed) noexcept;
 
+    /// The parts of the step's coefficients that depend on the bow force only (contact size). A friction law
+    /// asks for them three times per sample at one force (predict, correct, commit), and the contact radius
+    /// costs a cube root each time.
+    struct ForceTerms
+    {
+        double force = -1.0; ///< the (clamped) force they were computed for; < 0 before the first use
+        double capacityRate = 0.0, advectionPerSpeed = 0.0, movingPerRootSpeed = 0.0;
+        double kernelScale = 1.0, invScaledG0 = 0.0;
+    };
+    /// ForceTerms at one force (clamped to kMinimumBowForce), for engines that advance many contacts of this
+    /// model at once (PlasticLanes).
+    ForceTerms forceTermsAt(double bowForce) const noexcept { return forceTerms(bowForce); }
+    /// r_m = exp(-dt / tau_m) and the weights c_m tau_m (1 - r_m) of the stationary-side history (eq. 2.9).
+    const std::vector<double>& decays() const noexcept { return decay_; }
+    const std::vector<double>& weights() const noexcept { return weight_; }
     const StationaryKernel& kernel() const noexcept { return kernel_; }
     double timeStep() const noexcept { return dt_; }
 
@@ -64,14 +79,6 @@ class HeatBalance
         double conductance;  ///< G_loc = advection + moving-side conduction, W/K
         double kernelScale;  ///< A_ref / A: multiplies the kernel weights c_m and g0
         double invScaledG0;  ///< 1 / (kernelScale g0), W/K
-    };
-    /// The parts of Local that depend on the bow force only. A friction law asks for them three times per
-    /// sample at one force (predict, correct, commit), and the contact radius costs a cube root each time.
-    struct ForceTerms
-    {
-        double force = -1.0; ///< the (clamped) force they were computed for; < 0 before the first use
-        double capacityRate = 0.0, advectionPerSpeed = 0.0, movingPerRootSpeed = 0.0;
-        double kernelScale = 1.0, invScaledG0 = 0.0;
     };
     const ForceTerms& forceTerms(double bowForce) const noexcept;
     Local local(double slidingSpeed, double bowForce) const noexcept;

@@ -1,0 +1,47 @@
+#pragma once
+// The plastic thermal law (PlasticThermalLaw.h) for all eight lanes at once: the same predictor, exact
+// stick/slide solve, corrector and implicit heat-balance commit, with each lane's temperature,
+// stationary-side history and previous power held side by side so that each step is one loop over the lanes.
+// The calibration table, the heat model's sum-of-exponentials and the contact geometry are shared (read from
+// one prepared PlasticThermalLaw), so eight lanes keep one copy in cache instead of eight. A lane agrees with
+// its own PlasticThermalLaw to rounding (the history sum is added in another order;
+// tests/physics/VoiceLanesTest.cpp).
+#include <memory>
+#include <vector>
+
+#include "../friction/PlasticThermalLaw.h"
+#include "LaneFriction.h"
+
+namespace rosin::physics
+{
+
+class PlasticLanes final : public LaneFriction
+{
+  public:
+    /// `law` must be prepared (it holds the calibration and the heat model).
+    explicit PlasticLanes(std::unique_ptr<PlasticThermalLaw> law);
+    void reset() noexcept override;
+    void resetLane(int lane) noexcept override;
+    void solve(const LaneJunctionInput& in, LaneJunctionSolution& out) noexcept override;
+    double contactTemperature(int lane) const noexcept override { return temperature_[lane]; }
+
+  private:
+    using Lanes = std::array<double, kLanes>;
+    /// The force-dependent terms of each lane, recomputed when its bow force changes.
+    void updateForces(const Lanes& bowForce) noexcept;
+    /// Temperature each lane would reach with power P and sliding speed v (HeatBalance::predict).
+    void predict(const Lanes& power, const Lanes& speed, Lanes& temperature) const noexcept;
+    void limits(const Lanes& temperature, Lanes& limit) const noexcept;
+    void commit(const LaneJunctionSolution& s) noexcept;
+    void solveCharacteristic(const Lanes& dvh, double twoZ, const Lanes& limit,
+                             LaneJunctionSolution& out) const noexcept;
+
+    std::unique_ptr<PlasticThermalLaw> law_;
+    std::vector<double> decay_, weight_; ///< r_m and c_m tau_m (1 - r_m) of the shared heat model
+    std::vector<Lanes> history_;         ///< u_m of every lane
+    Lanes temperature_{}, historySum_{}, previousPower_{}, previousSpeed_{};
+    Lanes force_{}, area_{};
+    Lanes capacityRate_{}, advectionPerSpeed_{}, movingPerRootSpeed_{}, kernelScale_{}, invScaledG0_{};
+};
+
+} // namespace rosin::physics
