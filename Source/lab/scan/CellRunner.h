@@ -1,9 +1,9 @@
 #pragma once
 // Runs cells of one scan, up to kLanes cells of one beta at a time in the SIMD lanes of one VoiceLanes.
 // Preparing a thermal law calibrates it (~25 ms, longer than a 0.5 s trial), so each worker prepares one
-// voice and one law per lane and resets them between batches: reset() returns the string, body and friction
-// laws to rest, so a cell's result depends neither on which cells the runner computed before nor on which
-// cells share its batch (tests/scan checks both byte for byte).
+// voice and the lanes' friction once (physics::makeLaneFriction) and resets them between batches: reset()
+// returns the string, body and friction to rest, so a cell's result depends neither on which cells the
+// runner computed before nor on which cells share its batch (tests/scan checks both byte for byte).
 #include <array>
 #include <cstddef>
 #include <vector>

@@ -10,7 +10,6 @@
 // two against each other.
 #include <array>
 #include <memory>
-#include <vector>
 
 #include "../voice/BowedStringVoice.h"
 #include "LaneFriction.h"
