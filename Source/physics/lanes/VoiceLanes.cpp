@@ -1,5 +1,6 @@
 #include "VoiceLanes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 

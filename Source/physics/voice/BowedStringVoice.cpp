@@ -311,7 +311,7 @@ VoiceCoefficients BowedStringVoice::coefficients() const noexcept
     c.beta = s.beta;
     c.tensionPerLength = s.string.tension / s.length;
     c.M3 = s.M3, c.D = s.D, c.A1 = s.A1, c.Bv = s.Bv;
-    c.U0 = s.U0, c.U1 = s.U1, c.U2 = s.U2;
+    c.U1 = s.U1, c.U2 = s.U2; // U0 drops out: a single string has no other strings' force G0
     c.y0 = s.y0, c.bandCorrection = s.bandCorrection, c.bridgeCoupling = s.bridgeCoupling;
     return c;
 }

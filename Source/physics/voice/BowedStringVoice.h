@@ -38,7 +38,7 @@ struct VoiceCoefficients
     const BridgeBody* body = nullptr;
     // The per-sample solve (BowedStringVoice.cpp): F = R - c G, v = v_h + y0 f.
     double beta = 0.1, tensionPerLength = 0.0, M3 = 0.0, D = 1.0, A1 = 0.0, Bv = 0.0;
-    double U0 = 0.0, U1 = 0.0, U2 = 0.0, y0 = 1.0, bandCorrection = 0.0, bridgeCoupling = 0.0;
+    double U1 = 0.0, U2 = 0.0, y0 = 1.0, bandCorrection = 0.0, bridgeCoupling = 0.0;
 };
 
 /// Per-sample bow input, already smoothed (see BowGesture), SI units.
