@@ -185,15 +185,20 @@ double sawtoothness(const std::vector<double>& x, std::size_t begin, std::size_t
     for (std::size_t j = 0; j < n; ++j)
         mean += x[begin + j];
     mean /= static_cast<double>(n);
+    // The Hann window and the two harmonics' phasors advance by one fixed rotation per sample (no sine or
+    // cosine per sample: this runs on every scan cell; the rounding over a window is ~1e-12).
     std::complex<double> F1, F2;
+    const std::complex<double> windowStep = std::polar(1.0, 2.0 * M_PI / static_cast<double>(n));
+    const std::complex<double> step1 = std::polar(1.0, -2.0 * M_PI / periodSamples), step2 = step1 * step1;
+    std::complex<double> windowPhasor = 1.0, e1 = 1.0, e2 = 1.0;
     for (std::size_t j = 0; j < n; ++j)
     {
-        const double tj = static_cast<double>(j);
-        const double w = 0.5 - 0.5 * std::cos(2.0 * M_PI * tj / static_cast<double>(n));
-        const double v = w * (x[begin + j] - mean);
-        const double phase = 2.0 * M_PI * tj / periodSamples;
-        F1 += v * std::polar(1.0, -phase);
-        F2 += v * std::polar(1.0, -2.0 * phase);
+        const double v = (0.5 - 0.5 * windowPhasor.real()) * (x[begin + j] - mean);
+        F1 += v * e1;
+        F2 += v * e2;
+        windowPhasor *= windowStep;
+        e1 *= step1;
+        e2 *= step2;
     }
     return std::abs(F2) > 0.0 ? std::abs(F1) / (2.0 * std::abs(F2)) : 1e9;
 }

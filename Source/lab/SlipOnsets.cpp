@@ -76,12 +76,12 @@ std::vector<SlipEpisode> slipEpisodesFromVoice(const std::vector<physics::VoiceS
 ForceAndState forceAndState(const std::vector<physics::VoiceSample>& samples)
 {
     ForceAndState out;
-    out.bridgeForce.reserve(samples.size());
-    out.sticking.reserve(samples.size());
-    for (const auto& s : samples)
+    out.bridgeForce.resize(samples.size());
+    out.sticking.resize(samples.size());
+    for (std::size_t k = 0; k < samples.size(); ++k)
     {
-        out.bridgeForce.push_back(s.bridgeForce);
-        out.sticking.push_back(s.sticking);
+        out.bridgeForce[k] = samples[k].bridgeForce;
+        out.sticking[k] = samples[k].sticking;
     }
     return out;
 }
