@@ -98,8 +98,9 @@ trial:
   --duration S             seconds per trial (default schelleng 1, guettler 0.5)
   --ramp S                 schelleng only: time to reach the bow speed (default 0.1)
   --full-trials            guettler only: run every trial to --duration; by default a trial ends once its
-                           transient is decided (44 periods after the first full flyback), and the regime
-                           column is then that of the last 20 periods of that window
+                           transient is decided (44 periods after the first full flyback, or as soon as
+                           Helmholtz motion can no longer start within 20 periods), and the regime column
+                           is then that of the 20 periods before that point
 running:
   --out DIR                output folder (required; created if missing)
   --threads N              threads (default: every core)

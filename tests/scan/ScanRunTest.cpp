@@ -2,6 +2,7 @@
 // resumed, or split into shards and merged; a partial file of another scan is refused.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <filesystem>
 
@@ -77,6 +78,30 @@ TEST(ScanRun, CellsDoNotDependOnTheirBatch)
     EXPECT_EQ(formatRow(together[2]), formatRow(runner.run(7)));
     EXPECT_EQ(formatRow(together[0]), formatRow(runner.run(std::vector<std::size_t>{3, 0}).back()));
     EXPECT_THROW(runner.run(std::vector<std::size_t>{0, 12}), std::invalid_argument); // two betas
+}
+
+// More cells than lanes, of two betas: each lane takes the next cell as soon as its trial ends (the cells of
+// the second beta once all lanes are free), and every cell comes out once, as if it had run alone.
+TEST(ScanRun, LanesTakeTheNextCellWhenTheirTrialEnds)
+{
+    ScanSpec spec = test::smallSpec();
+    spec.model.friction = "plastic";
+    spec.trialSeconds = 0.25; // long enough for trials to end at different times
+    CellRunner streaming(spec), alone(spec);
+    std::size_t next = 0;
+    std::vector<std::string> rows(spec.cellCount());
+    std::vector<std::size_t> order;
+    streaming.runAll([&]() -> std::optional<std::size_t>
+                     { return next < spec.cellCount() ? std::optional(next++) : std::nullopt; },
+                     [&](const CellResult& r)
+                     {
+                         order.push_back(r.cell);
+                         rows[r.cell] = formatRow(r);
+                     });
+    ASSERT_EQ(order.size(), spec.cellCount());
+    EXPECT_FALSE(std::is_sorted(order.begin(), order.end())); // shorter trials ended first
+    for (std::size_t c = 0; c < spec.cellCount(); ++c)
+        EXPECT_EQ(rows[c], formatRow(alone.run(c))) << "cell " << c;
 }
 
 TEST(ScanRun, InterruptedRunResumesToTheSameFiles)

@@ -58,15 +58,41 @@ TEST(SpecJson, BadFilesAreReportedWithTheField)
     }
 }
 
-// Spec files from before trials could end early describe whole trials, and are read as such.
-TEST(SpecJson, OlderFilesWithoutTheEarlyEndRunWholeTrials)
+// Spec files keep the trial-end rule their rows were computed with: files from before trials could end
+// early describe whole trials, files from before "trialEnd" with "endAfterTransient": true the window rule.
+TEST(SpecJson, OlderFilesKeepTheirTrialEndRule)
 {
     ScanSpec s = defaultSpec(ScanKind::Guettler);
-    ASSERT_TRUE(s.endAfterTransient);
+    ASSERT_EQ(s.trialEnd, GuettlerTrialEnd::WhenDecided);
     nlohmann::json j = specToJson(s);
-    EXPECT_TRUE(specFromJson(j, "new.json").endAfterTransient);
-    j.erase("endAfterTransient");
-    EXPECT_FALSE(specFromJson(j, "old.json").endAfterTransient);
-    s.endAfterTransient = false;
-    EXPECT_EQ(specText(specFromText(specText(s), "x.json")), specText(s));
+    EXPECT_EQ(j.at("trialEnd"), "decided");
+    EXPECT_EQ(specFromJson(j, "new.json").trialEnd, GuettlerTrialEnd::WhenDecided);
+    j.erase("trialEnd");
+    EXPECT_EQ(specFromJson(j, "oldest.json").trialEnd, GuettlerTrialEnd::Whole);
+    j["endAfterTransient"] = true;
+    EXPECT_EQ(specFromJson(j, "old.json").trialEnd, GuettlerTrialEnd::AfterWindow);
+    j["endAfterTransient"] = false;
+    EXPECT_EQ(specFromJson(j, "old.json").trialEnd, GuettlerTrialEnd::Whole);
+    for (auto e : {GuettlerTrialEnd::Whole, GuettlerTrialEnd::AfterWindow, GuettlerTrialEnd::WhenDecided})
+    {
+        s.trialEnd = e;
+        EXPECT_EQ(specText(specFromText(specText(s), "x.json")), specText(s));
+    }
+}
+
+TEST(SpecJson, AnUnknownTrialEndRuleNamesTheField)
+{
+    nlohmann::json j = specToJson(defaultSpec(ScanKind::Guettler));
+    j["trialEnd"] = "soon";
+    try
+    {
+        specFromJson(j, "bad.json");
+        FAIL() << "accepted trialEnd \"soon\"";
+    }
+    catch (const rosin::config::ConfigError& e)
+    {
+        EXPECT_EQ(e.field(), "trialEnd");
+        EXPECT_NE(std::string(e.what()).find("bad.json"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("decided"), std::string::npos);
+    }
 }

@@ -3,8 +3,10 @@
 //  * the first slip from the solver's state (lab::firstSlipFromState): mu_s, the jump, its time;
 //  * the steady regime over the end of the trial (lab::classifyFromVoice, flybacks only): Guettler the last
 //    20 nominal periods, Schelleng the second half of the time after the ramp (at least 20 periods). A
-//    Guettler trial normally ends with its transient window (ScanSpec::endAfterTransient), so its regime is
-//    that of the window's last 20 periods, the motion the transient was judged to reach or miss;
+//    Guettler trial normally ends once its transient is decided (ScanSpec::trialEnd, TrialEnd.h): with its
+//    transient window, or sooner once the transient can no longer start within the cap, so its regime is
+//    that of the 20 periods before that point, the motion the transient reached, or the motion in which it
+//    missed;
 //  * the transient (lab::measureTransient on the full flybacks, reference 7.3: 5 % period tolerance, a run
 //    of >= 5 Helmholtz periods lasting to the end of the analysed window, cap 20 periods). The window is the
 //    first 40 periods after the first slip (see addTransient); fewer than 20 periods of trial after the first

@@ -1,42 +1,24 @@
 #include "CellRunner.h"
 
 #include <algorithm>
-#include <cmath>
-#include <optional>
 #include <stdexcept>
 
 #include "CellAnalysis.h"
+#include "TrialEnd.h"
 #include "TrialProtocol.h"
-#include "lab/RegimeClassifier.h"
-#include "lab/SlipOnsets.h"
 
 namespace rosin::scan
 {
 
-namespace
+struct CellRunner::Lane
 {
-// How often (periods) a Guettler trial looks for its first full flyback while it runs.
-constexpr double kFlybackCheckPeriods = 5.0;
-
-// Onset of the first full flyback so far. Episodes only grow, so one found now is the first of the whole
-// trial.
-std::optional<std::size_t> firstFullFlyback(const std::vector<physics::VoiceSample>& samples, double beta)
-{
-    const auto episodes = lab::fullFlybacksOnly(lab::slipEpisodesFromVoice(samples), beta, kFlybackShare);
-    if (episodes.empty())
-        return std::nullopt;
-    return episodes.front().onset;
-}
-
-// Samples after the first full flyback that the analysis reads: 2 x cap periods of the period it measures
-// against, which is within the classifier's tolerance of the nominal one (CellAnalysis.h).
-std::size_t transientWindowSamples(double nominalPeriod)
-{
-    const double longest = nominalPeriod * (1.0 + lab::regime_thresholds::kPeriodTolerance);
-    return static_cast<std::size_t>(std::ceil(2.0 * kTransientCapPeriods * longest)) + 1;
-}
-
-} // namespace
+    int index = 0;
+    std::optional<std::size_t> cell; ///< empty: free
+    CellSettings settings;
+    std::optional<TrialProtocol> protocol;
+    std::optional<TrialEnd> end;
+    std::size_t k = 0; ///< the trial's next sample
+};
 
 CellRunner::CellRunner(const ScanSpec& spec) : spec_(spec)
 {
@@ -49,98 +31,110 @@ CellRunner::CellRunner(const ScanSpec& spec) : spec_(spec)
 void CellRunner::useBeta(double beta)
 {
     if (beta == lanesBeta_)
-    {
-        lanes_.reset();
         return;
-    }
     voice_.setBowPosition(beta, 1.0);
     lanes_.retune(voice_);
     lanesBeta_ = beta;
 }
 
-std::vector<CellResult> CellRunner::run(const std::vector<std::size_t>& cells)
+void CellRunner::start(Lane& lane, std::size_t cell)
 {
-    const std::size_t n = cells.size();
-    if (n == 0 || n > kBatch)
-        throw std::invalid_argument("CellRunner::run: 1 to " + std::to_string(kBatch) + " cells at a time");
-    std::vector<CellSettings> settings;
-    std::vector<TrialProtocol> protocols;
-    for (const std::size_t cell : cells)
-    {
-        settings.push_back(cellSettings(spec_, cell));
-        protocols.emplace_back(spec_, settings.back());
-        if (settings.back().beta != settings.front().beta)
-            throw std::invalid_argument("CellRunner::run: the cells of a batch must share one beta");
-    }
-    useBeta(settings.front().beta);
+    lane.cell = cell;
+    lane.settings = cellSettings(spec_, cell);
+    lane.protocol.emplace(spec_, lane.settings);
+    // Schelleng trials always run whole: their regime is judged at the end.
+    const GuettlerTrialEnd rule = spec_.kind == ScanKind::Guettler ? spec_.trialEnd : GuettlerTrialEnd::Whole;
+    lane.end.emplace(rule, lane.settings.beta, periodSamples_, lane.protocol->samples());
+    lane.k = 0;
+    auto& samples = samples_[static_cast<std::size_t>(lane.index)];
+    samples.clear();
+    samples.reserve(lane.protocol->samples());
+    lanes_.resetLane(lane.index);
+}
 
-    std::array<std::size_t, physics::kLanes> end{};
-    std::array<bool, physics::kLanes> looking{};
-    for (std::size_t l = 0; l < n; ++l)
-    {
-        samples_[l].clear();
-        samples_[l].reserve(protocols[l].samples());
-        end[l] = protocols[l].samples();
-        looking[l] = spec_.kind == ScanKind::Guettler && spec_.endAfterTransient;
-    }
-    const auto checkInterval = static_cast<std::size_t>(std::ceil(kFlybackCheckPeriods * periodSamples_));
-    physics::LaneBowInput in; // lanes beyond n stay at rest
+CellResult CellRunner::finish(const Lane& lane) const
+{
+    TrialContext context;
+    context.kind = spec_.kind;
+    context.cell = lane.settings;
+    context.sampleRate = spec_.sampleRate;
+    context.periodSamples = periodSamples_;
+    context.rampEnd = lane.protocol->rampEnd();
+    return analyseTrial(samples_[static_cast<std::size_t>(lane.index)], context);
+}
+
+void CellRunner::runAll(const CellSource& next, const CellSink& done)
+{
+    std::array<Lane, physics::kLanes> lanes;
+    for (int l = 0; l < physics::kLanes; ++l)
+        lanes[static_cast<std::size_t>(l)].index = l;
+    std::optional<std::size_t> waiting; // a cell of another beta, taken from `next`
+    bool more = true;
+    physics::LaneBowInput in; // free lanes get no bow
     std::array<physics::VoiceSample, physics::kLanes> out;
-    std::size_t last = *std::max_element(end.begin(), end.begin() + n);
-    for (std::size_t k = 0; k < last; ++k)
+    for (;;)
     {
-        for (std::size_t l = 0; l < n; ++l)
+        bool busy = std::any_of(lanes.begin(), lanes.end(), [](const Lane& l) { return l.cell.has_value(); });
+        for (Lane& lane : lanes)
         {
-            const physics::BowInput b = protocols[l].at(std::min(k, end[l] - 1));
+            if (lane.cell || !more)
+                continue;
+            if (!waiting && !(waiting = next()))
+            {
+                more = false;
+                break;
+            }
+            const double beta = cellSettings(spec_, *waiting).beta;
+            if (beta != lanesBeta_ && busy)
+                break; // until every lane is free
+            useBeta(beta);
+            start(lane, *waiting);
+            waiting.reset();
+            busy = true;
+        }
+        if (!busy)
+            return;
+        for (const Lane& lane : lanes)
+        {
+            const auto l = static_cast<std::size_t>(lane.index);
+            const physics::BowInput b = lane.cell ? lane.protocol->at(lane.k) : physics::BowInput{0.0, 0.0};
             in.bowForce[l] = b.bowForce;
             in.bowVelocity[l] = b.bowVelocity;
         }
         lanes_.step(in, out);
-        bool ended = false;
-        for (std::size_t l = 0; l < n; ++l)
+        for (Lane& lane : lanes)
         {
-            if (k >= end[l])
+            if (!lane.cell)
                 continue;
+            const auto l = static_cast<std::size_t>(lane.index);
             samples_[l].push_back(out[l]);
-            if (!looking[l] || (k + 1) % checkInterval != 0)
-                continue;
-            if (const auto onset = firstFullFlyback(samples_[l], settings[l].beta))
+            ++lane.k;
+            if (lane.end->add(out[l]))
             {
-                end[l] = std::min(end[l], *onset + transientWindowSamples(periodSamples_));
-                looking[l] = false;
-                ended = true;
+                done(finish(lane));
+                lane.cell.reset();
             }
         }
-        if (ended)
-            last = *std::max_element(end.begin(), end.begin() + n);
     }
-
-    std::vector<CellResult> results;
-    for (std::size_t l = 0; l < n; ++l)
-    {
-        TrialContext context;
-        context.kind = spec_.kind;
-        context.cell = settings[l];
-        context.sampleRate = spec_.sampleRate;
-        context.periodSamples = periodSamples_;
-        context.rampEnd = protocols[l].rampEnd();
-        results.push_back(analyseTrial(samples_[l], context));
-    }
-    return results;
 }
 
-std::vector<std::vector<std::size_t>> batchesOf(const ScanSpec& spec, const std::vector<std::size_t>& cells)
+std::vector<CellResult> CellRunner::run(const std::vector<std::size_t>& cells)
 {
-    std::vector<std::vector<std::size_t>> batches;
+    if (cells.empty())
+        throw std::invalid_argument("CellRunner::run: no cells");
     for (const std::size_t cell : cells)
-    {
-        const std::size_t beta = coordinatesOf(spec, cell).beta;
-        if (batches.empty() || batches.back().size() == CellRunner::kBatch ||
-            coordinatesOf(spec, batches.back().front()).beta != beta)
-            batches.emplace_back();
-        batches.back().push_back(cell);
-    }
-    return batches;
+        if (cellSettings(spec_, cell).beta != cellSettings(spec_, cells.front()).beta)
+            throw std::invalid_argument("CellRunner::run: the cells must share one beta");
+    std::size_t taken = 0;
+    std::vector<CellResult> results(cells.size());
+    runAll([&]() -> std::optional<std::size_t>
+           { return taken < cells.size() ? std::optional(cells[taken++]) : std::nullopt; },
+           [&](const CellResult& r)
+           {
+               const auto at = std::find(cells.begin(), cells.end(), r.cell) - cells.begin();
+               results[static_cast<std::size_t>(at)] = r;
+           });
+    return results;
 }
 
 } // namespace rosin::scan

@@ -1,11 +1,14 @@
 #pragma once
-// Runs cells of one scan, up to kLanes cells of one beta at a time in the SIMD lanes of one VoiceLanes.
+// Runs cells of one scan in the SIMD lanes of one VoiceLanes: kLanes trials of one beta at a time, each lane
+// taking the next cell as soon as its trial ends (TrialEnd.h), so no lane waits for a longer batch-mate.
 // Preparing a thermal law calibrates it (~25 ms, longer than a 0.5 s trial), so each worker prepares one
-// voice and the lanes' friction once (physics::makeLaneFriction) and resets them between batches: reset()
-// returns the string, body and friction to rest, so a cell's result depends neither on which cells the
-// runner computed before nor on which cells share its batch (tests/scan checks both byte for byte).
+// voice and the lanes' friction once (physics::makeLaneFriction) and returns a lane to rest before each
+// cell: a cell's result depends neither on which cells the runner computed before nor on which cells ran
+// beside it (tests/scan checks both byte for byte).
 #include <array>
 #include <cstddef>
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include "CellResult.h"
@@ -23,13 +26,18 @@ class CellRunner
     CellRunner(const CellRunner&) = delete;
     CellRunner& operator=(const CellRunner&) = delete;
 
-    /// Cells that can share a batch: the same beta, at most kLanes of them.
     static constexpr std::size_t kBatch = physics::kLanes;
-    /// Computes 1..kBatch cells of one beta together; results in the order given.
+    /// The next cell to run, or none when there are no more.
+    using CellSource = std::function<std::optional<std::size_t>()>;
+    using CellSink = std::function<void(const CellResult&)>;
+    /// Runs cells from `next` until it has none, each result to `done` as its trial ends (not in order).
+    /// Cells of another beta than the lanes' wait until every lane is free.
+    void runAll(const CellSource& next, const CellSink& done);
+    /// Computes cells of one beta; results in the order given.
     std::vector<CellResult> run(const std::vector<std::size_t>& cells);
     CellResult run(std::size_t cell) { return run(std::vector<std::size_t>{cell}).front(); }
-    /// The per-sample output of a cell of the last run, by its position in that run (tests, further
-    /// analyses).
+    /// The per-sample output of a cell of the last run() of at most kBatch cells, by its position in that run
+    /// (tests, further analyses).
     const std::vector<physics::VoiceSample>& lastSamples(std::size_t position = 0) const noexcept
     {
         return samples_[position];
@@ -37,7 +45,10 @@ class CellRunner
     double periodSamples() const noexcept { return periodSamples_; }
 
   private:
+    struct Lane;
     void useBeta(double beta);
+    void start(Lane& lane, std::size_t cell);
+    CellResult finish(const Lane& lane) const;
 
     const ScanSpec& spec_;
     physics::BowedStringVoice voice_; ///< holds the discrete system for the current beta
@@ -46,8 +57,5 @@ class CellRunner
     std::array<std::vector<physics::VoiceSample>, physics::kLanes> samples_;
     double periodSamples_ = 0.0;
 };
-
-/// Splits a list of cells into runs of consecutive cells with the same beta, at most kBatch long.
-std::vector<std::vector<std::size_t>> batchesOf(const ScanSpec& spec, const std::vector<std::size_t>& cells);
 
 } // namespace rosin::scan

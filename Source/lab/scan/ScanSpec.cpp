@@ -10,6 +10,20 @@ const char* kindName(ScanKind kind) noexcept
     return kind == ScanKind::Schelleng ? "schelleng" : "guettler";
 }
 
+const char* trialEndName(GuettlerTrialEnd end) noexcept
+{
+    switch (end)
+    {
+    case GuettlerTrialEnd::Whole:
+        return "whole";
+    case GuettlerTrialEnd::AfterWindow:
+        return "window";
+    case GuettlerTrialEnd::WhenDecided:
+        return "decided";
+    }
+    return "decided";
+}
+
 const std::vector<double>& seedGuettlerBetas()
 {
     static const std::vector<double> betas = {0.0357, 0.0449, 0.0566, 0.0714, 0.0899, 0.1133, 0.1428, 0.18};

@@ -24,6 +24,16 @@ enum class ScanKind
 /// "schelleng" / "guettler".
 const char* kindName(ScanKind kind) noexcept;
 
+/// Where a Guettler trial ends (its first slip and transient come out the same with every rule; TrialEnd.h).
+enum class GuettlerTrialEnd
+{
+    Whole,       ///< all trialSeconds
+    AfterWindow, ///< once the transient window is over: 2 x cap periods (+10 %) after the first flyback
+    WhenDecided  ///< as AfterWindow, or sooner once the transient can no longer start within the cap
+};
+/// "whole", "window", "decided".
+const char* trialEndName(GuettlerTrialEnd end) noexcept;
+
 struct ScanSpec
 {
     ScanKind kind = ScanKind::Guettler;
@@ -33,11 +43,8 @@ struct ScanSpec
     /// Schelleng: the bow reaches its speed with constant acceleration over this time (s); unused (0) for
     /// Guettler, whose bow accelerates for the whole trial.
     double rampSeconds = 0.0;
-    /// Guettler: end each trial once its transient is decided, 2 x cap periods (plus the 10 % period
-    /// tolerance) after the first full flyback, instead of running all trialSeconds (CellRunner). The first
-    /// slip and the transient come out the same; the regime is then that of the last 20 periods of the
-    /// transient window. false (`--full-trials`, and spec files written before this existed): whole trials.
-    bool endAfterTransient = true;
+    /// Guettler: where each trial ends (TrialEnd.h). WhenDecided by default; Whole with `--full-trials`.
+    GuettlerTrialEnd trialEnd = GuettlerTrialEnd::WhenDecided;
     std::vector<double> betas;
     std::vector<double> forces; ///< N
     std::vector<double> second; ///< accelerations, m/s^2 (Guettler), or bow speeds, m/s (Schelleng)

@@ -124,6 +124,22 @@ physics::ContactParameters readContact(const Reader& r)
     c.ambientOffset = r.get<double>("ambientOffset");
     return c;
 }
+
+// "trialEnd"; files written before it had "endAfterTransient" (true: the window rule), and older ones
+// nothing (whole trials). A resumed or merged scan keeps the rule its first rows were computed with.
+GuettlerTrialEnd readTrialEnd(const Reader& r, const json& j, const std::string& file)
+{
+    if (!j.contains("trialEnd"))
+        return j.contains("endAfterTransient") && r.get<bool>("endAfterTransient")
+                   ? GuettlerTrialEnd::AfterWindow
+                   : GuettlerTrialEnd::Whole;
+    const auto name = r.get<std::string>("trialEnd");
+    for (auto e : {GuettlerTrialEnd::Whole, GuettlerTrialEnd::AfterWindow, GuettlerTrialEnd::WhenDecided})
+        if (name == trialEndName(e))
+            return e;
+    throw config::ConfigError(file, "trialEnd", "\"whole\", \"window\" or \"decided\"",
+                              j.at("trialEnd").dump());
+}
 } // namespace
 
 json specToJson(const ScanSpec& s)
@@ -142,7 +158,7 @@ json specToJson(const ScanSpec& s)
             {"sampleRate", s.sampleRate},
             {"trialSeconds", s.trialSeconds},
             {"rampSeconds", s.rampSeconds},
-            {"endAfterTransient", s.endAfterTransient},
+            {"trialEnd", trialEndName(s.trialEnd)},
             {"betas", s.betas},
             {"forces", s.forces},
             {s.kind == ScanKind::Guettler ? "accelerations" : "bowSpeeds", s.second}};
@@ -169,8 +185,7 @@ ScanSpec specFromJson(const json& j, const std::string& file)
     s.sampleRate = r.get<double>("sampleRate");
     s.trialSeconds = r.get<double>("trialSeconds");
     s.rampSeconds = r.get<double>("rampSeconds");
-    // Absent in files written before trials could end early: those scans ran whole trials.
-    s.endAfterTransient = j.contains("endAfterTransient") && r.get<bool>("endAfterTransient");
+    s.trialEnd = readTrialEnd(r, j, file);
     s.betas = r.get<std::vector<double>>("betas");
     s.forces = r.get<std::vector<double>>("forces");
     s.second = r.get<std::vector<double>>(s.kind == ScanKind::Guettler ? "accelerations" : "bowSpeeds");

@@ -1,6 +1,7 @@
 #include "WorkerPool.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "CellRunner.h"
 #include "CsvRow.h"
@@ -14,9 +15,9 @@ unsigned defaultThreadCount() noexcept
 }
 
 WorkerPool::WorkerPool(const ScanSpec& spec, std::vector<std::size_t> cells, unsigned threads)
-    : batches_(batchesOf(spec, cells))
+    : cells_(std::move(cells))
 {
-    const std::size_t n = batches_.empty() ? 0 : std::clamp<std::size_t>(threads, 1, batches_.size());
+    const std::size_t n = cells_.empty() ? 0 : std::clamp<std::size_t>(threads, 1, cells_.size());
     running_ = n;
     for (std::size_t i = 0; i < n; ++i)
         threads_.emplace_back([this, &spec] { work(spec); });
@@ -34,16 +35,19 @@ void WorkerPool::work(const ScanSpec& spec)
     try
     {
         CellRunner runner(spec); // prepares this thread's voice (a thermal law calibrates: ~25 ms)
-        for (std::size_t i = next_++; i < batches_.size() && !stopping_; i = next_++)
-        {
-            std::vector<FinishedCell> finished;
-            for (const CellResult& result : runner.run(batches_[i]))
-                finished.push_back({result.cell, formatRow(result)});
-            const std::lock_guard lock(mutex_);
-            for (auto& row : finished)
+        runner.runAll(
+            [this]() -> std::optional<std::size_t>
+            {
+                const std::size_t i = stopping_ ? cells_.size() : next_++;
+                return i < cells_.size() ? std::optional(cells_[i]) : std::nullopt;
+            },
+            [this](const CellResult& result)
+            {
+                FinishedCell row{result.cell, formatRow(result)};
+                const std::lock_guard lock(mutex_);
                 done_.push_back(std::move(row));
-            ready_.notify_all();
-        }
+                ready_.notify_all();
+            });
     }
     catch (...)
     {

@@ -1,6 +1,6 @@
 #pragma once
 // Computes a list of cells on several threads, each with its own CellRunner (one prepared voice per thread).
-// Threads take the next batch of cells (up to eight of one beta, run in SIMD lanes) from a shared counter, so
+// Each thread's runner takes the next cell from a shared counter whenever one of its SIMD lanes is free, so
 // the split varies from run to run, but every cell is computed independently and deterministically: the rows
 // do not depend on it. Finished rows are handed to the owning thread through take(), which is where they are
 // written, counted and (MPI) sent.
@@ -46,7 +46,7 @@ class WorkerPool
   private:
     void work(const ScanSpec& spec);
 
-    std::vector<std::vector<std::size_t>> batches_; ///< the cells, in runs of one beta (CellRunner::run)
+    std::vector<std::size_t> cells_; ///< in order, so that cells of one beta come together
     std::atomic<std::size_t> next_{0};
     std::atomic<bool> stopping_{false};
     std::mutex mutex_;

@@ -35,6 +35,8 @@ class VoiceLanes
     void retune(const BowedStringVoice& voice);
     /// Every lane back to rest.
     void reset() noexcept;
+    /// One lane back to rest, as after reset(): the others go on undisturbed.
+    void resetLane(int lane) noexcept;
     /// Advances every lane one sample and writes each lane's output.
     void step(const LaneBowInput& in, std::array<VoiceSample, kLanes>& out) noexcept;
 
@@ -43,7 +45,6 @@ class VoiceLanes
     {
         std::array<double, kLanes> Sv{}, Sa{}, Tv{}, uh{}, udh{}, uddh{}, previousFriction{};
     };
-    void resetLane(int lane) noexcept;
 
     VoiceCoefficients c_; ///< only its numbers are used after retune(): the pointers follow the voice
     LaneModes trans_, tors_, body_;
