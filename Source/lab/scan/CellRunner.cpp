@@ -20,12 +20,14 @@ struct CellRunner::Lane
     std::size_t k = 0; ///< the trial's next sample
 };
 
-CellRunner::CellRunner(const ScanSpec& spec) : spec_(spec)
+CellRunner::CellRunner(const ScanSpec& spec, bool skipStuckStarts) : spec_(spec)
 {
     voice_.prepare(voiceConfig(spec.model), frictionLaw(spec.model), spec.sampleRate);
     lanes_.prepare(voice_,
                    physics::makeLaneFriction([&spec] { return frictionLaw(spec.model); }, spec.sampleRate));
     periodSamples_ = spec.sampleRate / spec.model.string.fundamental();
+    skipStuckStarts_ =
+        skipStuckStarts && spec.kind == ScanKind::Guettler && lanes_.friction().restingLimit(1.0).has_value();
 }
 
 void CellRunner::useBeta(double beta)
@@ -34,6 +36,8 @@ void CellRunner::useBeta(double beta)
         return;
     voice_.setBowPosition(beta, 1.0);
     lanes_.retune(voice_);
+    if (skipStuckStarts_)
+        rampStart_.prepare(voice_, spec_.sampleRate);
     lanesBeta_ = beta;
 }
 
@@ -50,6 +54,25 @@ void CellRunner::start(Lane& lane, std::size_t cell)
     samples.clear();
     samples.reserve(lane.protocol->samples());
     lanes_.resetLane(lane.index);
+    if (skipStuckStarts_)
+        skipStuckStart(lane, samples);
+}
+
+// The samples in which the trial certainly sticks, scaled from the unit start (RampStart.h).
+void CellRunner::skipStuckStart(Lane& lane, std::vector<physics::VoiceSample>& samples)
+{
+    const double a = lane.settings.second, limit = *lanes_.friction().restingLimit(lane.settings.force);
+    const std::size_t skipped = rampStart_.skippable(a, limit, lane.protocol->samples());
+    if (skipped == 0)
+        return;
+    rampStart_.start(lanes_, lane.index, a, skipped);
+    for (; lane.k < skipped; ++lane.k)
+    {
+        const physics::VoiceSample& unit = rampStart_.unitSample(lane.k);
+        const double vb = lane.protocol->at(lane.k).bowVelocity;
+        samples.push_back({a * unit.bridgeForce, vb, a * unit.frictionForce, vb, 0.0, true});
+        lane.end->add(samples.back());
+    }
 }
 
 CellResult CellRunner::finish(const Lane& lane) const

@@ -1,6 +1,8 @@
 #pragma once
 // Runs cells of one scan in the SIMD lanes of one VoiceLanes: kLanes trials of one beta at a time, each lane
-// taking the next cell as soon as its trial ends (TrialEnd.h), so no lane waits for a longer batch-mate.
+// taking the next cell as soon as its trial ends (TrialEnd.h), so no lane waits for a longer batch-mate. A
+// Guettler trial with an exact friction law starts where it is certain to still stick to the bow, scaled from
+// a unit-acceleration start (physics::RampStart).
 // Preparing a thermal law calibrates it (~25 ms, longer than a 0.5 s trial), so each worker prepares one
 // voice and the lanes' friction once (physics::makeLaneFriction) and returns a lane to rest before each
 // cell: a cell's result depends neither on which cells the runner computed before nor on which cells ran
@@ -13,6 +15,7 @@
 
 #include "CellResult.h"
 #include "ScanSpec.h"
+#include "physics/lanes/RampStart.h"
 #include "physics/lanes/VoiceLanes.h"
 #include "physics/voice/BowedStringVoice.h"
 
@@ -22,7 +25,9 @@ namespace rosin::scan
 class CellRunner
 {
   public:
-    explicit CellRunner(const ScanSpec& spec);
+    /// skipStuckStarts: Guettler trials of an exact law skip the samples in which they certainly still stick
+    /// (physics::RampStart); false computes every sample (tests compare the two).
+    explicit CellRunner(const ScanSpec& spec, bool skipStuckStarts = true);
     CellRunner(const CellRunner&) = delete;
     CellRunner& operator=(const CellRunner&) = delete;
 
@@ -48,12 +53,15 @@ class CellRunner
     struct Lane;
     void useBeta(double beta);
     void start(Lane& lane, std::size_t cell);
+    void skipStuckStart(Lane& lane, std::vector<physics::VoiceSample>& samples);
     CellResult finish(const Lane& lane) const;
 
     const ScanSpec& spec_;
     physics::BowedStringVoice voice_; ///< holds the discrete system for the current beta
     physics::VoiceLanes lanes_;
     double lanesBeta_ = -1.0;
+    bool skipStuckStarts_ = false;
+    physics::RampStart rampStart_;
     std::array<std::vector<physics::VoiceSample>, physics::kLanes> samples_;
     double periodSamples_ = 0.0;
 };

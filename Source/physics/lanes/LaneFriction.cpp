@@ -29,6 +29,12 @@ void ScalarLaneFriction::solve(const LaneJunctionInput& in, LaneJunctionSolution
         out[l] = laws_[l]->solve({in.dvHistory[l], in.loadSlope, in.bowForce[l]});
 }
 
+void StuckLanes::solve(const LaneJunctionInput& in, LaneJunctionSolution& out) noexcept
+{
+    for (int l = 0; l < kLanes; ++l)
+        out[l] = {0.0, -in.loadSlope * in.dvHistory[l], true};
+}
+
 std::unique_ptr<LaneFriction> makeLaneFriction(const std::function<std::unique_ptr<FrictionLaw>()>& makeLaw,
                                                double sampleRate)
 {

@@ -5,6 +5,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "../friction/FrictionLaw.h"
@@ -33,6 +34,22 @@ class LaneFriction
     virtual void solve(const LaneJunctionInput& in, LaneJunctionSolution& out) noexcept = 0;
     /// K above ambient (0 for laws without a temperature).
     virtual double contactTemperature(int lane) const noexcept = 0;
+    /// For laws whose sticking is exact (dv = 0, f = -2Z dv_h) and leaves a lane's state as at rest: the
+    /// largest friction force a lane at rest holds at this bow force, N. Empty for other laws (state that
+    /// evolves while stuck, creep): a trial's sticking start then cannot be scaled from another's
+    /// (RampStart.h).
+    virtual std::optional<double> restingLimit(double /*bowForce*/) const noexcept { return std::nullopt; }
+};
+
+/// Every lane sticks, whatever the force: the sticking branch of the exact laws (PlasticThermalLaw), for a
+/// start that must not slip (RampStart.h).
+class StuckLanes final : public LaneFriction
+{
+  public:
+    void reset() noexcept override {}
+    void resetLane(int) noexcept override {}
+    void solve(const LaneJunctionInput& in, LaneJunctionSolution& out) noexcept override;
+    double contactTemperature(int) const noexcept override { return 0.0; }
 };
 
 /// One prepared FrictionLaw per lane.

@@ -42,6 +42,12 @@ void PlasticLanes::resetLane(int l) noexcept
     temperature_[l] = historySum_[l] = previousPower_[l] = previousSpeed_[l] = 0.0;
 }
 
+std::optional<double> PlasticLanes::restingLimit(double bowForce) const noexcept
+{
+    const double a = law_->contact().rig.radiusAt(bowForce);
+    return law_->yieldStress(0.0) * std::numbers::pi * a * a; // ThermalContact::area at ambient
+}
+
 void PlasticLanes::updateForces(const Lanes& bowForce) noexcept
 {
     for (int l = 0; l < kLanes; ++l)

@@ -24,6 +24,8 @@ class PlasticLanes final : public LaneFriction
     void resetLane(int lane) noexcept override;
     void solve(const LaneJunctionInput& in, LaneJunctionSolution& out) noexcept override;
     double contactTemperature(int lane) const noexcept override { return temperature_[lane]; }
+    /// Sticking moves no heat (dv = 0): a stuck lane stays at ambient, where it holds yield stress x area.
+    std::optional<double> restingLimit(double bowForce) const noexcept override;
 
   private:
     using Lanes = std::array<double, kLanes>;

@@ -43,8 +43,39 @@ void VoiceLanes::resetLane(int l) noexcept
     trans_.resetLane(l);
     tors_.resetLane(l);
     body_.resetLane(l);
-    for (auto* x : {&h_.Sv, &h_.Sa, &h_.Tv, &h_.uh, &h_.udh, &h_.uddh, &h_.previousFriction})
+    for (auto* x : h_.all())
         (*x)[l] = 0.0;
+    friction_->resetLane(l);
+}
+
+void VoiceLanes::captureLane(int l, LaneState& state) const
+{
+    state.modes.clear();
+    for (const LaneModes* bank : {&trans_, &tors_, &body_})
+        for (int k = 0; k < bank->modes; ++k)
+        {
+            state.modes.push_back(bank->w[k].re[l]);
+            state.modes.push_back(bank->w[k].im[l]);
+        }
+    const auto h = h_.all();
+    for (std::size_t i = 0; i < h.size(); ++i)
+        state.histories[i] = (*h[i])[l];
+}
+
+void VoiceLanes::restoreLane(int l, const LaneState& state, double scale) noexcept
+{
+    const auto scaled = [scale](ModalReal x)
+    { return static_cast<ModalReal>(scale * static_cast<double>(x)); };
+    std::size_t i = 0;
+    for (LaneModes* bank : {&trans_, &tors_, &body_})
+        for (int k = 0; k < bank->modes && i + 1 < state.modes.size(); ++k, i += 2)
+        {
+            bank->w[k].re[l] = scaled(state.modes[i]);
+            bank->w[k].im[l] = scaled(state.modes[i + 1]);
+        }
+    auto h = h_.all();
+    for (std::size_t j = 0; j < h.size(); ++j)
+        (*h[j])[l] = scale * state.histories[j];
     friction_->resetLane(l);
 }
 

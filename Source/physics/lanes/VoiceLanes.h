@@ -10,6 +10,7 @@
 // two against each other.
 #include <array>
 #include <memory>
+#include <vector>
 
 #include "../voice/BowedStringVoice.h"
 #include "LaneFriction.h"
@@ -25,6 +26,13 @@ struct LaneBowInput
     std::array<double, kLanes> bowVelocity{}; ///< m/s
 };
 
+/// One lane's string and body state (its friction's is not included), captured to be scaled into another.
+struct LaneState
+{
+    std::vector<ModalReal> modes; ///< re, im of every transverse, torsional and body mode
+    std::array<double, 7> histories{};
+};
+
 class VoiceLanes
 {
   public:
@@ -37,6 +45,12 @@ class VoiceLanes
     void reset() noexcept;
     /// One lane back to rest, as after reset(): the others go on undisturbed.
     void resetLane(int lane) noexcept;
+    /// Copies a lane's string and body state.
+    void captureLane(int lane, LaneState& state) const;
+    /// Sets a lane to `scale` times a captured state, with its friction at rest: the state of a trial that
+    /// has stuck to the bow so far, which is linear in the bow's motion (RampStart.h).
+    void restoreLane(int lane, const LaneState& state, double scale) noexcept;
+    const LaneFriction& friction() const noexcept { return *friction_; }
     /// Advances every lane one sample and writes each lane's output.
     void step(const LaneBowInput& in, std::array<VoiceSample, kLanes>& out) noexcept;
 
@@ -44,6 +58,14 @@ class VoiceLanes
     struct Histories
     {
         std::array<double, kLanes> Sv{}, Sa{}, Tv{}, uh{}, udh{}, uddh{}, previousFriction{};
+        std::array<std::array<double, kLanes>*, 7> all() noexcept
+        {
+            return {&Sv, &Sa, &Tv, &uh, &udh, &uddh, &previousFriction};
+        }
+        std::array<const std::array<double, kLanes>*, 7> all() const noexcept
+        {
+            return {&Sv, &Sa, &Tv, &uh, &udh, &uddh, &previousFriction};
+        }
     };
 
     VoiceCoefficients c_; ///< only its numbers are used after retune(): the pointers follow the voice
