@@ -247,7 +247,7 @@ void trial(const Values& v, scan::ScanSpec& s)
     {
         if (s.kind != ScanKind::Guettler)
             bad("--full-trials", "a guettler scan (schelleng trials always run whole)", "schelleng");
-        s.trialEnd = GuettlerTrialEnd::Whole;
+        s.trialEnd = scan::GuettlerTrialEnd::Whole;
     }
     if (s.kind == ScanKind::Schelleng && !(s.rampSeconds < s.trialSeconds))
         bad("--ramp",
