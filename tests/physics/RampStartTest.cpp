@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "physics/friction/FrictionLawFactory.h"
 #include "physics/lanes/RampStart.h"
@@ -103,10 +104,16 @@ TEST_F(RampStartTest, NothingIsSkippedWithoutAnAccelerationOrALimit)
     EXPECT_EQ(ramp.skippable(0.0, 1.0, 24000), 0u);
     EXPECT_EQ(ramp.skippable(1.0, 0.0, 24000), 0u);
     EXPECT_EQ(ramp.skippable(1.0, 1.0, 10), 0u); // shorter than one stride
-    // A friction curve's lanes may hold state while stuck: no resting limit, so scans never skip them.
-    VoiceLanes curves;
-    curves.prepare(
-        voice,
-        makeLaneFriction([] { return makeFrictionLaw(FrictionModel::Classical, galluzzoContact()); }, kRate));
-    EXPECT_FALSE(curves.friction().restingLimit(1.0).has_value());
+    // A friction curve sticks exactly, up to mu_s N; the viscous law never sticks: no resting limit, so
+    // scans never skip its starts.
+    auto lanesOf = [this](FrictionModel model)
+    {
+        auto lanes = std::make_unique<VoiceLanes>();
+        lanes->prepare(
+            voice, makeLaneFriction([model] { return makeFrictionLaw(model, galluzzoContact()); }, kRate));
+        return lanes;
+    };
+    EXPECT_DOUBLE_EQ(*lanesOf(FrictionModel::Classical)->friction().restingLimit(2.0),
+                     2.0 * 1.2); // mu(0) = 1.2
+    EXPECT_FALSE(lanesOf(FrictionModel::Viscous)->friction().restingLimit(1.0).has_value());
 }

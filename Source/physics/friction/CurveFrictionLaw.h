@@ -1,6 +1,9 @@
 #pragma once
 // A friction-curve law: the classical (seed 001 eq. 1) or reconstructed (seed 001 eq. 2) curve,
 // solved exactly with the hysteresis rule.
+#include <algorithm>
+#include <optional>
+
 #include "CurveJunctionSolver.h"
 #include "FrictionCurves.h"
 
@@ -18,6 +21,11 @@ template <typename Curve> class CurveFrictionLaw final : public FrictionLaw
         return solveCurveJunction(curve_, in, memory_);
     }
     double staticCoefficient(double) const noexcept override { return curve_.mu(0.0); }
+    /// The hysteresis rule's sticking (solveCurveJunction) leaves the memory as reset() does.
+    std::optional<double> restingLimit(double bowForce) const noexcept override
+    {
+        return std::max(bowForce, 0.0) * curve_.staticMu();
+    }
     const char* name() const noexcept override { return name_; }
 
   private:

@@ -9,6 +9,8 @@
 // The law returns the intersection with its own characteristic, advancing any internal state
 // (hysteresis flag, contact temperature) by one sample.
 
+#include <optional>
+
 namespace rosin::physics
 {
 
@@ -44,6 +46,11 @@ class FrictionLaw
     virtual double contactTemperature() const noexcept { return 0.0; }
     /// Limiting static friction coefficient the law would give now (for analysis and tests).
     virtual double staticCoefficient(double bowForce) const noexcept = 0;
+    /// For a law whose sticking is exact (dv = 0, f = -2Z dv_h while |2Z dv_h| <= the limit) and leaves its
+    /// state as reset() does: the largest force it holds at rest at this bow force, N. Empty otherwise
+    /// (state that evolves while stuck, creep, no sticking at all). Scans use it to skip sticking starts
+    /// (RampStart.h).
+    virtual std::optional<double> restingLimit(double /*bowForce*/) const noexcept { return std::nullopt; }
     /// Short stable identifier, e.g. "classical".
     virtual const char* name() const noexcept = 0;
 };

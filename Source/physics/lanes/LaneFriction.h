@@ -34,10 +34,8 @@ class LaneFriction
     virtual void solve(const LaneJunctionInput& in, LaneJunctionSolution& out) noexcept = 0;
     /// K above ambient (0 for laws without a temperature).
     virtual double contactTemperature(int lane) const noexcept = 0;
-    /// For laws whose sticking is exact (dv = 0, f = -2Z dv_h) and leaves a lane's state as at rest: the
-    /// largest friction force a lane at rest holds at this bow force, N. Empty for other laws (state that
-    /// evolves while stuck, creep): a trial's sticking start then cannot be scaled from another's
-    /// (RampStart.h).
+    /// FrictionLaw::restingLimit of the lanes' law: empty when a trial's sticking start cannot be scaled
+    /// from another's (RampStart.h).
     virtual std::optional<double> restingLimit(double /*bowForce*/) const noexcept { return std::nullopt; }
 };
 
@@ -61,6 +59,11 @@ class ScalarLaneFriction final : public LaneFriction
     void resetLane(int lane) noexcept override { laws_[lane]->reset(); }
     void solve(const LaneJunctionInput& in, LaneJunctionSolution& out) noexcept override;
     double contactTemperature(int lane) const noexcept override { return laws_[lane]->contactTemperature(); }
+    /// The lanes' law's (FrictionLaw::restingLimit).
+    std::optional<double> restingLimit(double bowForce) const noexcept override
+    {
+        return laws_.front()->restingLimit(bowForce);
+    }
 
   private:
     std::vector<std::unique_ptr<FrictionLaw>> laws_;
