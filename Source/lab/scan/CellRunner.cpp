@@ -86,59 +86,69 @@ CellResult CellRunner::finish(const Lane& lane) const
     return analyseTrial(samples_[static_cast<std::size_t>(lane.index)], context);
 }
 
+// Starts the next cells on the free lanes; false once no lane is busy. A cell of another beta waits in
+// `waiting` until every lane is free, then the lanes are retuned for it.
+bool CellRunner::fillFreeLanes(Lanes& lanes, const CellSource& next, std::optional<std::size_t>& waiting,
+                               bool& more)
+{
+    bool busy = std::any_of(lanes.begin(), lanes.end(), [](const Lane& l) { return l.cell.has_value(); });
+    for (Lane& lane : lanes)
+    {
+        if (lane.cell || !more)
+            continue;
+        if (!waiting && !(waiting = next()))
+        {
+            more = false;
+            break;
+        }
+        const double beta = cellSettings(spec_, *waiting).beta;
+        if (beta != lanesBeta_ && busy)
+            break;
+        useBeta(beta);
+        start(lane, *waiting);
+        waiting.reset();
+        busy = true;
+    }
+    return busy;
+}
+
+// One sample of every lane; a lane whose trial ends hands its result to `done` and is free again.
+void CellRunner::stepLanes(Lanes& lanes, const CellSink& done)
+{
+    physics::LaneBowInput in; // free lanes get no bow
+    for (const Lane& lane : lanes)
+    {
+        const auto l = static_cast<std::size_t>(lane.index);
+        const physics::BowInput b = lane.cell ? lane.protocol->at(lane.k) : physics::BowInput{0.0, 0.0};
+        in.bowForce[l] = b.bowForce;
+        in.bowVelocity[l] = b.bowVelocity;
+    }
+    std::array<physics::VoiceSample, physics::kLanes> out;
+    lanes_.step(in, out);
+    for (Lane& lane : lanes)
+    {
+        if (!lane.cell)
+            continue;
+        const auto l = static_cast<std::size_t>(lane.index);
+        samples_[l].push_back(out[l]);
+        ++lane.k;
+        if (lane.end->add(out[l]))
+        {
+            done(finish(lane));
+            lane.cell.reset();
+        }
+    }
+}
+
 void CellRunner::runAll(const CellSource& next, const CellSink& done)
 {
-    std::array<Lane, physics::kLanes> lanes;
+    Lanes lanes;
     for (int l = 0; l < physics::kLanes; ++l)
         lanes[static_cast<std::size_t>(l)].index = l;
     std::optional<std::size_t> waiting; // a cell of another beta, taken from `next`
     bool more = true;
-    physics::LaneBowInput in; // free lanes get no bow
-    std::array<physics::VoiceSample, physics::kLanes> out;
-    for (;;)
-    {
-        bool busy = std::any_of(lanes.begin(), lanes.end(), [](const Lane& l) { return l.cell.has_value(); });
-        for (Lane& lane : lanes)
-        {
-            if (lane.cell || !more)
-                continue;
-            if (!waiting && !(waiting = next()))
-            {
-                more = false;
-                break;
-            }
-            const double beta = cellSettings(spec_, *waiting).beta;
-            if (beta != lanesBeta_ && busy)
-                break; // until every lane is free
-            useBeta(beta);
-            start(lane, *waiting);
-            waiting.reset();
-            busy = true;
-        }
-        if (!busy)
-            return;
-        for (const Lane& lane : lanes)
-        {
-            const auto l = static_cast<std::size_t>(lane.index);
-            const physics::BowInput b = lane.cell ? lane.protocol->at(lane.k) : physics::BowInput{0.0, 0.0};
-            in.bowForce[l] = b.bowForce;
-            in.bowVelocity[l] = b.bowVelocity;
-        }
-        lanes_.step(in, out);
-        for (Lane& lane : lanes)
-        {
-            if (!lane.cell)
-                continue;
-            const auto l = static_cast<std::size_t>(lane.index);
-            samples_[l].push_back(out[l]);
-            ++lane.k;
-            if (lane.end->add(out[l]))
-            {
-                done(finish(lane));
-                lane.cell.reset();
-            }
-        }
-    }
+    while (fillFreeLanes(lanes, next, waiting, more))
+        stepLanes(lanes, done);
 }
 
 std::vector<CellResult> CellRunner::run(const std::vector<std::size_t>& cells)

@@ -51,6 +51,9 @@ class CellRunner
 
   private:
     struct Lane;
+    using Lanes = std::array<Lane, physics::kLanes>;
+    bool fillFreeLanes(Lanes& lanes, const CellSource& next, std::optional<std::size_t>& waiting, bool& more);
+    void stepLanes(Lanes& lanes, const CellSink& done);
     void useBeta(double beta);
     void start(Lane& lane, std::size_t cell);
     void skipStuckStart(Lane& lane, std::vector<physics::VoiceSample>& samples);
