@@ -39,8 +39,8 @@ class LaneFriction
     virtual std::optional<double> restingLimit(double /*bowForce*/) const noexcept { return std::nullopt; }
 };
 
-/// Every lane sticks, whatever the force: the sticking branch of the exact laws (PlasticThermalLaw), for a
-/// start that must not slip (RampStart.h).
+/// Every lane sticks, whatever the force: the sticking branch of the exact laws (plastic, friction curves),
+/// for a start that must not slip (RampStart.h).
 class StuckLanes final : public LaneFriction
 {
   public:
