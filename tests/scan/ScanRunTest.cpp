@@ -131,6 +131,28 @@ TEST(ScanRun, InterruptedRunResumesToTheSameFiles)
                 first.computed, second.computed);
 }
 
+// Running the same command again on a finished folder (to redraw its figures, say) computes nothing; a
+// scan of another specification is computed afresh.
+TEST(ScanRun, FinishedRunIsReadBackNotComputedAgain)
+{
+    rosin::test::TempDir tmp;
+    const Outputs one = reference(tmp);
+    const std::string dir = tmp.path() + "/single";
+    const RunReport again = test::run(test::smallSpec(), dir, test::quietOptions(2));
+    EXPECT_TRUE(again.complete);
+    EXPECT_EQ(again.computed, 0u);
+    EXPECT_EQ(again.resumed, 24u);
+    EXPECT_TRUE(outputs(dir) == one);
+    EXPECT_FALSE(fs::exists(dir + "/scan.partial.csv"));
+
+    ScanSpec changed = test::smallSpec();
+    changed.model.friction = "reconstructed";
+    const RunReport other = test::run(changed, dir, test::quietOptions(2));
+    EXPECT_EQ(other.computed, 24u);
+    EXPECT_NE(file(dir, "scan.spec.json"), one.spec);
+    EXPECT_NE(file(dir, "scan.csv"), one.csv);
+}
+
 TEST(ScanRun, TornLastLineIsComputedAgain)
 {
     rosin::test::TempDir tmp;

@@ -107,6 +107,23 @@ void writeRowsFile(const fs::path& file, ScanKind kind, const RowMap& rows)
     writeFileAtomically(file, text);
 }
 
+namespace
+{
+// The rows of an earlier run of the same specification, copied into the partial file, to which the cells
+// still missing are appended.
+RowMap resumeFrom(const fs::path& file, const RunFiles& files, const ScanSpec& spec, bool tolerateTornLine)
+{
+    RowMap rows = readRowsFile(file, spec, tolerateTornLine);
+    for (const auto& [cell, row] : rows)
+        if (!files.owns(cell))
+            throw ScanError(file.string() + ": cell " + std::to_string(cell) +
+                            " does not belong to this run's shard");
+    // Rewritten whole, so that new rows are not appended to a torn last line.
+    writeRowsFile(files.partial(), spec.kind, rows);
+    return rows;
+}
+} // namespace
+
 RowMap startRun(const RunFiles& files, const ScanSpec& spec, const std::string& specText)
 {
     std::error_code ec;
@@ -116,6 +133,8 @@ RowMap startRun(const RunFiles& files, const ScanSpec& spec, const std::string& 
                         (ec ? " (" + ec.message() + ")" : std::string()));
     if (!fs::exists(files.partial()))
     {
+        if (fs::exists(files.rows()) && fs::exists(files.spec()) && readTextFile(files.spec()) == specText)
+            return resumeFrom(files.rows(), files, spec, false); // a finished run: outputs written again
         writeFileAtomically(files.spec(), specText);
         return {};
     }
@@ -128,14 +147,7 @@ RowMap startRun(const RunFiles& files, const ScanSpec& spec, const std::string& 
                         files.spec().string() +
                         "; this scan vs the stored one: " + describeSpecDifference(specText, stored) +
                         "). Use another --out folder, or remove the partial file to start afresh");
-    RowMap rows = readRowsFile(files.partial(), spec, true);
-    for (const auto& [cell, row] : rows)
-        if (!files.owns(cell))
-            throw ScanError(files.partial().string() + ": cell " + std::to_string(cell) +
-                            " does not belong to this run's shard");
-    // Rewritten whole, so that new rows are not appended to a torn last line.
-    writeRowsFile(files.partial(), spec.kind, rows);
-    return rows;
+    return resumeFrom(files.partial(), files, spec, true);
 }
 
 } // namespace rosin::scan

@@ -50,8 +50,11 @@ class RunFiles
 std::string shardStem(const ShardId& shard);
 
 /// Prepares a run before its first cell: creates the folder, and either checks an existing partial file
-/// against the specification and returns its rows (resume), or writes the specification and starts afresh.
-/// Throws ScanError if the partial file belongs to another specification or cannot be read.
+/// against the specification and returns its rows (resume), or returns the rows of a finished run of the
+/// same specification (STEM.csv: nothing to compute, the outputs are written again), or writes the
+/// specification and starts afresh (a finished run of another specification is replaced when this one
+/// completes). Throws ScanError if the partial file belongs to another specification or a file cannot be
+/// read.
 RowMap startRun(const RunFiles& files, const ScanSpec& spec, const std::string& specText);
 
 /// Reads a rows file (partial or complete) of this kind: the header, then one row per line. A last line

@@ -52,14 +52,15 @@ RunReport runScan(const ScanSpec& spec, const fs::path& dir, const RunOptions& o
 {
     const std::string text = specText(spec);
     const RunFiles files(dir, o.shard);
+    const bool interrupted = fs::exists(files.partial());
     RowMap rows = startRun(files, spec, text);
     RunReport report;
     report.total = ownedCells(spec, files);
     report.resumed = rows.size();
     const std::vector<std::size_t> pending = pendingCells(spec, files, rows);
     if (report.resumed > 0)
-        out << "resuming: " << report.resumed << " of " << report.total << " cells read back from "
-            << files.partial().string() << "\n";
+        out << (interrupted ? "resuming: " : "already computed: ") << report.resumed << " of " << report.total
+            << " cells read back from " << (interrupted ? files.partial() : files.rows()).string() << "\n";
     Progress progress(err, report.total, rows.size(), o.progress);
     if (!pending.empty())
     {

@@ -1,5 +1,6 @@
 #pragma once
-// One run of a scan in this process: every cell, or one shard's. Resumes from the run's partial file,
+// One run of a scan in this process: every cell, or one shard's. Resumes from the run's partial file (or
+// reads back a finished run of the same specification and only writes its outputs again),
 // computes the missing cells on all threads, appends each row as it finishes, and when the last cell is done
 // writes the run's sorted rows (a shard) or the final files (ScanOutput.h) and removes the partial file. A
 // stop request (StopSignal.h) lets the running cells finish and leaves the partial file for the next run.
@@ -29,7 +30,7 @@ struct RunReport
 {
     bool complete = false;
     std::size_t total = 0;    ///< cells of this run
-    std::size_t resumed = 0;  ///< read back from the partial file
+    std::size_t resumed = 0;  ///< read back from the partial file or a finished run's rows
     std::size_t computed = 0; ///< computed now
 };
 
