@@ -52,7 +52,11 @@ bool runFigureScript(const std::vector<std::string>& arguments, std::ostream& er
     }
     std::string command = "python3 " + quoted(script), shown = "python3 " + script;
     for (const auto& a : arguments)
-        command += " " + quoted(a), shown += " " + a;
+    {
+        // Appended piecewise: GCC 12 warns (-Wrestrict, a false positive) on " " + std::string here.
+        command.append(" ").append(quoted(a));
+        shown.append(" ").append(a);
+    }
     const int status = shellStatus(command);
     if (status != 0)
     {
