@@ -14,6 +14,7 @@
 #include "discovery/DatasetReader.h"
 #include "discovery/discover/Discovery.h"
 #include "discovery/discover/DiscoveryReport.h"
+#include "lab/scan/ChildProcess.h"
 #include "render/dataset/TrialSignals.h"
 
 #ifndef ROSIN_DISCOVER_FIGURE_SCRIPT
@@ -45,8 +46,8 @@ std::vector<std::string> makeFigures(const fs::path& reportDir, std::ostream& er
     if (script.empty() || !fs::exists(script))
         return {};
     const std::string python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    const std::string command = python + " '" + script + "' '" + reportDir.string() + "' >/dev/null 2>&1";
-    if (std::system(command.c_str()) != 0)
+    // An argument vector, no shell: a report folder named with quotes or $(...) is only a folder name.
+    if (scan::runProgram({python, script, reportDir.string()}, true) != 0)
     {
         err << "warning: the figure script failed; the report has no figures\n";
         return {};

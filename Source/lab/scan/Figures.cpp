@@ -1,7 +1,8 @@
 #include "Figures.h"
 
 #include <cstdlib>
-#include <sys/wait.h>
+
+#include "ChildProcess.h"
 
 #ifndef ROSIN_FIGURE_SCRIPT
 #define ROSIN_FIGURE_SCRIPT ""
@@ -9,23 +10,6 @@
 
 namespace rosin::scan
 {
-
-namespace
-{
-std::string quoted(const std::string& text)
-{
-    std::string q = "'";
-    for (const char c : text)
-        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-int shellStatus(const std::string& command)
-{
-    const int raw = std::system(command.c_str());
-    return raw != -1 && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-}
-} // namespace
 
 std::string figureScriptPath()
 {
@@ -44,20 +28,21 @@ bool runFigureScript(const std::vector<std::string>& arguments, std::ostream& er
             << (script.empty() ? "(none built in)" : script) << " is missing" << consequence;
         return false;
     }
-    if (shellStatus("command -v python3 >/dev/null 2>&1") != 0)
+    if (!programAvailable("python3"))
     {
         err << "warning: figures not drawn: python3 is not installed (with matplotlib and numpy)"
             << consequence;
         return false;
     }
-    std::string command = "python3 " + quoted(script), shown = "python3 " + script;
+    std::vector<std::string> argv{"python3", script};
+    std::string shown = "python3 " + script;
     for (const auto& a : arguments)
     {
+        argv.push_back(a);
         // Appended piecewise: GCC 12 warns (-Wrestrict, a false positive) on " " + std::string here.
-        command.append(" ").append(quoted(a));
         shown.append(" ").append(a);
     }
-    const int status = shellStatus(command);
+    const int status = runProgram(argv);
     if (status != 0)
     {
         err << "warning: figures not drawn: " << shown << " exited with status " << status

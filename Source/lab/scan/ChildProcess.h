@@ -1,0 +1,18 @@
+#pragma once
+// Runs a helper program (the figure scripts) from an argument vector, never through a shell, so that a path
+// with quotes, spaces, $(...) or newlines reaches the program as one argument and runs nothing else
+// (issue 19). POSIX posix_spawnp: the program is looked up on PATH like a shell would.
+#include <string>
+#include <vector>
+
+namespace rosin::scan
+{
+
+/// Runs argv[0] with argv and waits. Returns its exit status, or -1 if it could not be started or did not
+/// exit normally. With `quiet`, its standard output and error go to /dev/null.
+int runProgram(const std::vector<std::string>& argv, bool quiet = false);
+
+/// True if `program` names an executable file, directly or on PATH.
+bool programAvailable(const std::string& program);
+
+} // namespace rosin::scan
