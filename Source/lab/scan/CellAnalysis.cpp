@@ -38,8 +38,8 @@ void addFirstSlip(const std::vector<physics::VoiceSample>& samples, const TrialC
     r.firstSlipTime = first.firstSlipTime;
 }
 
-// The period to measure the transient against: the steady one when the trial ends in one flyback per
-// period near the nominal pitch, else the nominal one.
+// The period to measure the transient against: the measured one when `steady` is one flyback per period
+// near the nominal pitch, else the nominal one.
 double transientPeriod(const lab::RegimeAnalysis& steady, double nominal)
 {
     const bool helmholtzType =
@@ -51,20 +51,25 @@ double transientPeriod(const lab::RegimeAnalysis& steady, double nominal)
 // Reference 7.3 on the flyback episodes, judged over the first 2 x cap periods after the first slip: the
 // Helmholtz run must start within the cap and last to the end of that window. The bow keeps accelerating
 // (Guettler) and F_min grows with the bow speed, so "lasting to the end of the trial" would make the
-// transient depend on the trial's length; this window does not, as long as the trial covers it.
-void addTransient(const std::vector<physics::VoiceSample>& samples, double P, double beta, CellResult& r)
+// transient depend on the trial's length; this window does not, as long as the trial covers it. For the same
+// reason the period it is counted in is measured over the window's second half, not at the trial's end,
+// where a faster bow flattens the string differently (an early-ended trial would count in another period).
+void addTransient(const std::vector<physics::VoiceSample>& samples, const TrialContext& c, CellResult& r)
 {
-    auto episodes = lab::fullFlybacksOnly(lab::slipEpisodesFromVoice(samples), beta, kFlybackShare);
+    const double nominal = c.periodSamples;
+    auto episodes = lab::fullFlybacksOnly(lab::slipEpisodesFromVoice(samples), c.cell.beta, kFlybackShare);
     if (episodes.empty())
         return;
-    const double window = static_cast<double>(episodes.front().onset) + 2.0 * kTransientCapPeriods * P;
+    const double window = static_cast<double>(episodes.front().onset) + 2.0 * kTransientCapPeriods * nominal;
     const auto end =
         static_cast<std::size_t>(std::min(static_cast<double>(samples.size()), std::ceil(window)));
     std::erase_if(episodes, [end](const lab::SlipEpisode& e) { return e.onset >= end; });
+    const auto half = static_cast<std::size_t>(std::round(kTransientCapPeriods * nominal));
+    const auto late = lab::classifyFromVoice(samples, nominal, {end - std::min(end, half), end});
     lab::TransientOptions t;
     t.capPeriods = kTransientCapPeriods;
     t.windowEnd = end;
-    const auto transient = lab::measureTransient(episodes, P, t);
+    const auto transient = lab::measureTransient(episodes, transientPeriod(late, nominal), t);
     // Fewer than cap periods of trial after the first slip: seed 001's "x" pixel, not a result.
     if (!transient.insufficientData)
         r.transientPeriods = transient.periods;
@@ -88,7 +93,7 @@ CellResult analyseTrial(const std::vector<physics::VoiceSample>& samples, const 
     if (steady.measuredPeriod > 0.0)
         r.pitchCents = steady.pitchCents;
 
-    addTransient(samples, transientPeriod(steady, c.periodSamples), c.cell.beta, r);
+    addTransient(samples, c, r);
     return r;
 }
 

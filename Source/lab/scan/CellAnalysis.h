@@ -12,8 +12,8 @@
 //    first 40 periods after the first slip (see addTransient); fewer than 20 periods of trial after the first
 //    slip leave the transient empty (seed 001's "x" pixels). Slip durations are not checked: the thermal
 //    laws end a flyback gently, and their steady flybacks last up to ~2 beta P (the reference's "loose"
-//    limit), so the check rejected steady Helmholtz motion of the plastic law. The period is the steady one
-//    measured at the end when the trial ends in one-slip-per-period motion within +-10 % of the nominal P
+//    limit), so the check rejected steady Helmholtz motion of the plastic law. The period is the one measured
+//    over the window's second half when that is one-slip-per-period motion within +-10 % of the nominal P
 //    (Helmholtz or S-motion: near F_max a string on a body is flattened by a few %, which the 5 % tolerance
 //    about the nominal P would count as failure), else the nominal P = 1/f0.
 #include <cstddef>
