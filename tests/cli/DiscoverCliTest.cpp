@@ -97,8 +97,10 @@ TEST_P(DiscoverHiddenEffect, IsNamedFirstAndAtLeastHalvesTheGap)
 }
 
 // String losses show in the corners of Helmholtz motion (harmonicTilt), so their dataset scans where the
-// string speaks, as a laboratory studying damping would: forces 0.4-2.4 N, accelerations 0.1-1.2 m/s^2, two
-// bow positions. Over the full grid most cells never reach Helmholtz motion in 0.4 s.
+// string speaks, as a laboratory studying damping would: forces 0.2-1.2 N, accelerations 0.1-1.2 m/s^2, two
+// bow positions. Over the full grid most cells never reach Helmholtz motion in 0.4 s. (With the two-sided
+// heat balance the plastic law's window lies lower: 0.4-2.4 N gave 15 % Helmholtz cells and p = 0.0027,
+// 0.2-1.2 N gives 31 % and p = 5e-5, gain +64 %.)
 INSTANTIATE_TEST_SUITE_P(
     EveryEffect, DiscoverHiddenEffect,
     ::testing::Values(HiddenEffect{"junction-growth", "junction-growth:growth=0.3,onsetTime=0.003", "3"},
@@ -113,7 +115,7 @@ INSTANTIATE_TEST_SUITE_P(
                       HiddenEffect{"extra-string-damping",
                                    "extra-string-damping:lossScale=3",
                                    "7",
-                                   {"--beta", "0.0899,0.1428", "--force-range", "0.4:2.4",
+                                   {"--beta", "0.0899,0.1428", "--force-range", "0.2:1.2",
                                     "--acceleration-range", "0.1:1.2"},
                                    "lossScale",
                                    3.0},

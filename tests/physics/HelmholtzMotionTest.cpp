@@ -57,8 +57,15 @@ HelmholtzFigures analyse(const test::Trace& t, double f0, double fromSeconds)
     return h;
 }
 
+/// Slip fraction / beta allowed: the ideal Helmholtz motion's 1, widened by how much the law rounds the
+/// corner.
+struct SlipBand
+{
+    double low = 0.75, high = 1.25;
+};
+
 void expectHelmholtzWith(const VoiceConfig& cfg, std::unique_ptr<FrictionLaw> law, const char* name,
-                         double force, double beta)
+                         double force, double beta, SlipBand band = {})
 {
     const double speed = 0.05;
     const auto t = test::bowSteady(cfg, std::move(law), 48000.0, force, speed, beta, 1.5);
@@ -67,7 +74,8 @@ void expectHelmholtzWith(const VoiceConfig& cfg, std::unique_ptr<FrictionLaw> la
     EXPECT_EQ(h.maxSlipsPerPeriod, 1) << name;
     EXPECT_EQ(h.minSlipsPerPeriod, 1) << name;
     EXPECT_NEAR(h.period * f0, 1.0, 0.01) << name;
-    EXPECT_NEAR(h.slipFraction / beta, 1.0, 0.25) << name;
+    EXPECT_GE(h.slipFraction / beta, band.low) << name;
+    EXPECT_LE(h.slipFraction / beta, band.high) << name;
     std::printf("[figure] Helmholtz %s F=%.2f N: period error %.3f %%, slip fraction %.4f (beta %.4f), "
                 "%d partial slips in 0.5 s\n",
                 name, force, 100.0 * (h.period * f0 - 1.0), h.slipFraction, beta, h.partialSlips);
@@ -98,12 +106,17 @@ TEST(HelmholtzMotion, ReconstructedCurve)
     expectHelmholtz<ReconstructedFrictionLaw>(ReconstructedCurve{}, "reconstructed", 0.3, 0.1, true);
 }
 
-// The plastic law ends each flyback gently (the rosin cools as the string slows) and leaves one to three
-// partial slips per period, in which the string lags the bow without reversing; they are reported.
+// The plastic law leaves partial slips, in which the string lags the bow without reversing; they are
+// reported. Its flybacks are rounded: each starts into a contact cooled to ~7 K while stuck (both solids
+// conduct), whose friction (mu ~0.6) only falls as the slip heats it, and ends as it cools again; measured
+// over this law's Helmholtz window at beta 0.1, v_b 0.05 m/s (0.12-0.42 N): slip fraction 1.30-1.39 beta
+// (0.15-0.4 N), so the band is 1.0-1.5 beta. 0.25 N is the window's middle. (With the old one-sided balance,
+// at 50-65 K, the window reached 0.5 N and the slip was within 25 % of beta.)
 TEST(HelmholtzMotion, PlasticThermalLaw)
 {
     VoiceConfig cfg;
     cfg.string = stringFromCatalogue("cello-D3");
     cfg.body = celloBody();
-    expectHelmholtzWith(cfg, makeFrictionLaw(FrictionModel::Plastic, galluzzoContact()), "plastic", 0.5, 0.1);
+    expectHelmholtzWith(cfg, makeFrictionLaw(FrictionModel::Plastic, galluzzoContact()), "plastic", 0.25, 0.1,
+                        {1.0, 1.5});
 }

@@ -4,8 +4,8 @@
 //
 // The plugin plays with its default "intonation by ear" on (gesture/IntonationEar.h): like a cellist, the
 // finger follows the pitch the string sounds. Without it the finger geometry alone misses 5 cents (measured:
-// cello -5.5 cents at 0.5 N on F2, force flattening; violin up to +9 cents above G6, bending stiffness of
-// short stopped lengths), which is physics, not a bug; IntonationEarTest checks the ear itself in closed
+// cello up to -6.0 cents at 0.5 N (F3), force flattening; violin up to +9 cents above G6, bending stiffness
+// of short stopped lengths), which is physics, not a bug; IntonationEarTest checks the ear itself in closed
 // loop.
 #include <gtest/gtest.h>
 
@@ -89,14 +89,21 @@ void checkRange(const PitchCase& c)
                 c.checkOpenStrings ? "" : ", stopped notes", worstOpen);
 }
 
+// The forces sit inside the plastic law's Helmholtz window on every string at v_b 0.1 m/s, beta 0.1 (D3 scan:
+// 0.21-0.92 N; `rosin scan schelleng --friction plastic --bow-speed 0.1`). Measured: at 0.5 N the C string's
+// notes 36-38 double-slip (its lower limit, ~Z0^2, is the highest of the four) and D#5 on the A string is
+// raucous, so 0.6 N is the moderate force for all four; 1 N, used before the two-sided heat balance, lies
+// above the upper limit at this beta (the contact runs cooler, mu_s - mu_d is larger).
 TEST(PluginPitch, CelloNotesC2ToA5SoundWithinFiveCents)
 {
-    checkRange({"cello-plastic", 36, 81, 0.5f, {36, 43, 50, 57}});
+    checkRange({"cello-plastic", 36, 81, 0.6f, {36, 43, 50, 57}});
 }
 
-TEST(PluginPitch, CelloStoppedNotesSoundWithinFiveCentsAtOneNewton)
+// Near the upper limit (0.8 N of 0.92 N on D3): open strings flatten (A3: -6.3 cents, measured) and have no
+// finger to correct, so only stopped notes are checked.
+TEST(PluginPitch, CelloStoppedNotesSoundWithinFiveCentsNearTheUpperForceLimit)
 {
-    checkRange({"cello-plastic", 36, 81, 1.0f, {36, 43, 50, 57}, false});
+    checkRange({"cello-plastic", 36, 81, 0.8f, {36, 43, 50, 57}, false});
 }
 
 TEST(PluginPitch, ViolinNotesG3ToE7SoundWithinFiveCents)

@@ -12,6 +12,7 @@
 #include "physics/friction/ModifiedThermalLaw.h"
 #include "physics/friction/PlasticThermalLaw.h"
 #include "physics/friction/ViscousThermalLaw.h"
+#include "physics/thermal/HeatBalance.h"
 
 using namespace rosin::physics;
 
@@ -132,10 +133,8 @@ TEST(ViscousThermalLaw, LinearSolveWithoutStickingBarrier)
     // Cold, the calibrated rosin is so viscous (c ~ 9e7 kg/s) that the string only creeps. Pre-warm the rosin
     // to the analytic steady temperature of a 0.1 m/s slide on the calibration rig (reference eq. 2.7):
     // then eta = F_cal mu(0.1) delta_cal / (A_cal 0.1) and the same linear solve applies, with no barrier.
-    const double v = 0.1, K = p.material.conductivity, rc = p.material.volumetricHeatCapacity, acal = 500e-6;
-    const double Gss = rc * acal * 10e-6 * v +
-                       pi * acal * acal * std::sqrt(K * rc) * std::sqrt(3.0 * v / (8.0 * acal)) +
-                       3.0 * pi * pi * K * acal / 8.0;
+    const double v = 0.1;
+    const double Gss = HeatBalance::steadyConductance(p.calibration, p.materials, 3.0, v);
     ContactParameters warm = p;
     warm.ambientOffset = 3.0 * muClassical(v) * v / Gss;
     ViscousThermalLaw hot(warm);

@@ -36,13 +36,19 @@ json geometryJson(const physics::ContactGeometry& g)
             {"scaling", scalingName(g.scaling)}};
 }
 
+json materialJson(const physics::ThermalMaterial& m)
+{
+    return {{"conductivity", m.conductivity}, {"volumetricHeatCapacity", m.volumetricHeatCapacity}};
+}
+
 json contactJson(const physics::ContactParameters& c)
 {
     return {{"rig", geometryJson(c.rig)},
             {"calibration", geometryJson(c.calibration)},
-            {"conductivity", c.material.conductivity},
-            {"volumetricHeatCapacity", c.material.volumetricHeatCapacity},
-            {"advectionWidthRatio", c.material.advectionWidthRatio},
+            {"layer", materialJson(c.materials.layer)},
+            {"stationary", materialJson(c.materials.stationary)},
+            {"moving", materialJson(c.materials.moving)},
+            {"advectionWidthRatio", c.materials.advectionWidthRatio},
             {"ambientOffset", c.ambientOffset}};
 }
 
@@ -69,6 +75,12 @@ class Reader
         {
             throw config::ConfigError(file_, field, "a value of the right type", j_.at(key).dump());
         }
+    }
+    bool has(const char* key) const { return j_.contains(key); }
+    /// A ConfigError for `key` of this object.
+    config::ConfigError error(const char* key, const std::string& expected) const
+    {
+        return config::ConfigError(file_, path_.empty() ? key : path_ + "." + key, expected);
     }
     Reader child(const char* key) const
     {
@@ -113,14 +125,25 @@ physics::ContactGeometry readGeometry(const Reader& r)
     return g;
 }
 
+physics::ThermalMaterial readMaterial(const Reader& r)
+{
+    return {r.get<double>("conductivity"), r.get<double>("volumetricHeatCapacity")};
+}
+
+// Files written before the two-sided heat balance have one "conductivity" and no solids: their rows came from
+// another model, so they are named as such rather than read as if they were this one's.
 physics::ContactParameters readContact(const Reader& r)
 {
+    if (!r.has("layer") && r.has("conductivity"))
+        throw r.error("layer", "the two-sided heat balance's materials (this scan was written by a Rosin "
+                               "with a one-sided heat balance: start it again in a new folder)");
     physics::ContactParameters c;
     c.rig = readGeometry(r.child("rig"));
     c.calibration = readGeometry(r.child("calibration"));
-    c.material.conductivity = r.get<double>("conductivity");
-    c.material.volumetricHeatCapacity = r.get<double>("volumetricHeatCapacity");
-    c.material.advectionWidthRatio = r.get<double>("advectionWidthRatio");
+    c.materials.layer = readMaterial(r.child("layer"));
+    c.materials.stationary = readMaterial(r.child("stationary"));
+    c.materials.moving = readMaterial(r.child("moving"));
+    c.materials.advectionWidthRatio = r.get<double>("advectionWidthRatio");
     c.ambientOffset = r.get<double>("ambientOffset");
     return c;
 }

@@ -7,6 +7,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "../thermal/Washout.h"
+
 namespace rosin::physics
 {
 
@@ -22,11 +24,46 @@ PlasticLanes::PlasticLanes(std::unique_ptr<PlasticThermalLaw> law) : law_(std::m
 {
     if (!law_)
         throw std::invalid_argument("PlasticLanes: a prepared plastic law is required");
-    decay_ = law_->heat().decays();
-    weight_ = law_->heat().weights();
-    history_.assign(decay_.size(), Lanes{});
+    stationary_.prepare(law_->heat().stationarySide());
+    moving_.prepare(law_->heat().movingSide());
     force_.fill(std::numeric_limits<double>::quiet_NaN());
     reset();
+}
+
+void PlasticLanes::SideLanes::prepare(const ConductingSide& side)
+{
+    decay = side.decays();
+    weight = side.weights();
+    history.assign(decay.size(), Lanes{});
+    sum = {};
+}
+
+void PlasticLanes::SideLanes::resetLane(int l) noexcept
+{
+    for (auto& u : history)
+        u[l] = 0.0;
+    sum[l] = 0.0;
+}
+
+// ConductingSide::advance for every lane.
+void PlasticLanes::SideLanes::advance(const Lanes& scaledFlux, const Lanes& washout) noexcept
+{
+    Lanes total{};
+    const std::size_t M = history.size();
+    for (std::size_t m = 0; m < M; ++m)
+    {
+        const double r = decay[m], w = weight[m];
+        double* __restrict u = history[m].data();
+#pragma omp simd
+        for (int l = 0; l < kLanes; ++l)
+        {
+            double next = washout[l] * r * (u[l] + w * scaledFlux[l]);
+            next = std::abs(next) < 1e-250 ? 0.0 : next; // keep long silences free of denormals
+            u[l] = next;
+            total[l] += next;
+        }
+    }
+    sum = total;
 }
 
 void PlasticLanes::reset() noexcept
@@ -37,9 +74,9 @@ void PlasticLanes::reset() noexcept
 
 void PlasticLanes::resetLane(int l) noexcept
 {
-    for (auto& u : history_)
-        u[l] = 0.0;
-    temperature_[l] = historySum_[l] = previousPower_[l] = previousSpeed_[l] = 0.0;
+    stationary_.resetLane(l);
+    moving_.resetLane(l);
+    temperature_[l] = previousPower_[l] = previousSpeed_[l] = 0.0;
 }
 
 std::optional<double> PlasticLanes::restingLimit(double bowForce) const noexcept
@@ -58,25 +95,36 @@ void PlasticLanes::updateForces(const Lanes& bowForce) noexcept
         const HeatBalance::ForceTerms t = law_->heat().forceTermsAt(bowForce[l]);
         capacityRate_[l] = t.capacityRate;
         advectionPerSpeed_[l] = t.advectionPerSpeed;
-        movingPerRootSpeed_[l] = t.movingPerRootSpeed;
         kernelScale_[l] = t.kernelScale;
-        invScaledG0_[l] = t.invScaledG0;
+        invStationaryG0_[l] = t.invStationaryG0;
+        invMovingG0_[l] = t.invMovingG0;
+        washoutPerSpeed_[l] = t.washoutPerSpeed;
         const double a = law_->contact().rig.radiusAt(bowForce[l]);
         area_[l] = std::numbers::pi * a * a; // ThermalContact::area
     }
 }
 
-// T = (P + C T_prev + H / g0) / (C + G_loc(v) + 1 / g0), HeatBalance::solveTemperature with local().
-void PlasticLanes::predict(const Lanes& power, const Lanes& speed, Lanes& T) const noexcept
+void PlasticLanes::movingTerms(const Lanes& speed, Lanes& invMoving, Lanes& decay) const noexcept
 {
-#pragma omp simd
     for (int l = 0; l < kLanes; ++l)
     {
-        const double v = sanitiseNonNegative(speed[l]);
-        const double conductance = advectionPerSpeed_[l] * v + movingPerRootSpeed_[l] * std::sqrt(v);
+        const double x = sanitiseNonNegative(speed[l]) * washoutPerSpeed_[l];
+        invMoving[l] = invMovingG0_[l] / washout::firstStepFactor(x);
+        decay[l] = washout::decay(x);
+    }
+}
+
+// HeatBalance::solveTemperature with local(), lane by lane.
+void PlasticLanes::predict(const Lanes& power, const Lanes& speed, Lanes& T) const noexcept
+{
+    Lanes invMoving, decay;
+    movingTerms(speed, invMoving, decay);
+    for (int l = 0; l < kLanes; ++l)
+    {
+        const double advection = advectionPerSpeed_[l] * sanitiseNonNegative(speed[l]);
         T[l] = (sanitiseNonNegative(power[l]) + capacityRate_[l] * temperature_[l] +
-                historySum_[l] * invScaledG0_[l]) /
-               (capacityRate_[l] + conductance + invScaledG0_[l]);
+                stationary_.sum[l] * invStationaryG0_[l] + moving_.sum[l] * invMoving[l]) /
+               (capacityRate_[l] + advection + invStationaryG0_[l] + invMoving[l]);
     }
 }
 
@@ -105,37 +153,33 @@ void PlasticLanes::commit(const LaneJunctionSolution& s) noexcept
     previousPower_ = power;
     previousSpeed_ = speed;
     predict(power, speed, T);
-    Lanes scaledFlux;
+    Lanes invMoving, decay, toStationary, toMoving;
+    movingTerms(speed, invMoving, decay);
     for (int l = 0; l < kLanes; ++l)
     {
-        const double flux = (T[l] - historySum_[l]) * invScaledG0_[l];
-        if (!std::isfinite(T[l]) || !std::isfinite(flux))
+        const double qs = (T[l] - stationary_.sum[l]) * invStationaryG0_[l];
+        const double qm = (T[l] - moving_.sum[l]) * invMoving[l];
+        if (!std::isfinite(T[l]) || !std::isfinite(qs) || !std::isfinite(qm))
         {
             // HeatBalance::reset(): this lane's heat model back to ambient (its previous power stays).
-            for (auto& u : history_)
-                u[l] = 0.0;
-            T[l] = 0.0;
-            scaledFlux[l] = 0.0;
+            stationary_.resetLane(l);
+            moving_.resetLane(l);
+            T[l] = toStationary[l] = toMoving[l] = 0.0;
             continue;
         }
-        scaledFlux[l] = kernelScale_[l] * flux;
+        toStationary[l] = kernelScale_[l] * qs;
+        toMoving[l] = kernelScale_[l] * qm *
+                      washout::depositFactor(sanitiseNonNegative(speed[l]) * washoutPerSpeed_[l]);
     }
-    Lanes sum{};
-    const std::size_t M = history_.size();
-    for (std::size_t m = 0; m < M; ++m)
+    static constexpr Lanes kNoWashout = []
     {
-        const double r = decay_[m], w = weight_[m];
-        double* __restrict u = history_[m].data();
-#pragma omp simd
-        for (int l = 0; l < kLanes; ++l)
-        {
-            double next = r * (u[l] + w * scaledFlux[l]);
-            next = std::abs(next) < 1e-250 ? 0.0 : next; // keep long silences free of denormals
-            u[l] = next;
-            sum[l] += next;
-        }
-    }
-    historySum_ = sum;
+        Lanes one{};
+        for (double& x : one)
+            x = 1.0;
+        return one;
+    }();
+    stationary_.advance(toStationary, kNoWashout);
+    moving_.advance(toMoving, decay);
     temperature_ = T;
 }
 

@@ -38,12 +38,25 @@ class PlasticLanes final : public LaneFriction
     void solveCharacteristic(const Lanes& dvh, double twoZ, const Lanes& limit,
                              LaneJunctionSolution& out) const noexcept;
 
+    /// One solid's SOE history for every lane (ConductingSide, lane by lane).
+    struct SideLanes
+    {
+        std::vector<double> decay, weight; ///< r_m and w_m of the shared heat model
+        std::vector<Lanes> history;        ///< u_m of every lane
+        Lanes sum{};                       ///< H of every lane
+        void prepare(const ConductingSide& side);
+        void resetLane(int lane) noexcept;
+        void advance(const Lanes& scaledFlux, const Lanes& washout) noexcept;
+    };
+    /// 1 / g0 of the moving side and its washout at each lane's sliding speed.
+    void movingTerms(const Lanes& speed, Lanes& invMoving, Lanes& washout) const noexcept;
+
     std::unique_ptr<PlasticThermalLaw> law_;
-    std::vector<double> decay_, weight_; ///< r_m and c_m tau_m (1 - r_m) of the shared heat model
-    std::vector<Lanes> history_;         ///< u_m of every lane
-    Lanes temperature_{}, historySum_{}, previousPower_{}, previousSpeed_{};
+    SideLanes stationary_, moving_;
+    Lanes temperature_{}, previousPower_{}, previousSpeed_{};
     Lanes force_{}, area_{};
-    Lanes capacityRate_{}, advectionPerSpeed_{}, movingPerRootSpeed_{}, kernelScale_{}, invScaledG0_{};
+    Lanes capacityRate_{}, advectionPerSpeed_{}, kernelScale_{}, invStationaryG0_{}, invMovingG0_{},
+        washoutPerSpeed_{};
 };
 
 } // namespace rosin::physics

@@ -15,8 +15,12 @@ namespace rosin::physics
 /// Seed 000's target: steady-sliding contact temperature at the rod speed, K above ambient.
 inline constexpr double kCantileverSteadyTemperature = 55.0;
 
-/// Rig and calibration contact: radius 0.59 mm at 6.3 N (see contactRadiusForSteadyTemperature), 10 um layer,
-/// Coulomb scaling, the default rosin material.
+/// Seed 000's solids: a rosin layer between the perspex wedge (stationary: the contact stays on it) and the
+/// rosin coat of the wooden rod that slides through it.
+ContactMaterials cantileverMaterials();
+
+/// Rig and calibration contact: radius at 6.3 N from contactRadiusForSteadyTemperature (a calibration: the
+/// seed's own condition, see above), 10 um layer, Coulomb scaling, cantileverMaterials().
 ContactParameters cantileverContact();
 
 /// Steady-sliding contact temperature rise (K) on `contact.rig` at sliding speed `speed` (m/s) and normal
@@ -24,9 +28,9 @@ ContactParameters cantileverContact();
 /// which the thermal laws reproduce in steady sliding when the rig is the calibration contact.
 double steadySlidingTemperature(const ContactParameters& contact, double speed, double normalForce);
 
-/// Radius (m) at N = referenceForce of a disc with `layerThickness` and `material` whose steady-sliding
+/// Radius (m) at N = referenceForce of a disc with `layerThickness` and `materials` whose steady-sliding
 /// temperature at `speed` is `targetKelvin`; bisection (T falls as the disc grows: more area conducts).
 double contactRadiusForSteadyTemperature(double targetKelvin, double speed, double normalForce,
-                                         double layerThickness, const ThermalMaterial& material);
+                                         double layerThickness, const ContactMaterials& materials);
 
 } // namespace rosin::physics

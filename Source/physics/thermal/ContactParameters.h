@@ -2,6 +2,8 @@
 // Geometry and materials of the rosin contact (seed 001 Table 2; reference §2.3-2.7).
 #include <string>
 
+#include "ThermalMaterial.h"
+
 namespace rosin::physics
 {
 
@@ -23,21 +25,13 @@ struct ContactGeometry
     double radiusAt(double normalForce) const;
 };
 
-/// Thermal properties used by the heat balance. Values: reference §2.6 "set B", which reproduces the seed's
-/// crossing temperatures (26.2 K, 36.8 K); both are estimates for rosin ([A] in the reference).
-struct ThermalMaterial
-{
-    double conductivity = 0.191;              ///< K_r, W/(m K)
-    double volumetricHeatCapacity = 0.9987e6; ///< rho_r c_r, J/(m^3 K)
-    double advectionWidthRatio = 1.0;         ///< advection width w = ratio * a (WG25 writes w = a)
-};
-
 /// Everything the thermal friction laws need besides the sample rate.
 struct ContactParameters
 {
     ContactGeometry rig; ///< the bowing contact: Galluzzo rig by default
     ContactGeometry calibration{500e-6, 3.0, 10e-6, ContactScaling::Coulomb}; ///< steady-sliding rig
-    ThermalMaterial material;
+    ContactMaterials
+        materials; ///< rosin layer, stationary and moving solids (seed 001: acrylic rod on a string)
     double ambientOffset = 0.0; ///< K: rosin temperature at rest minus the calibration's ambient
 };
 

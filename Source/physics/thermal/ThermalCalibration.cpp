@@ -40,7 +40,7 @@ void ThermalCalibration::build(const ContactParameters& contact, double sampleRa
 {
     quantity_ = q;
     HeatBalance heat; // the heat model's own steady conductance, same time step as the law
-    heat.prepare(contact.calibration, contact.material, sampleRate);
+    heat.prepare(contact.calibration, contact.materials, sampleRate);
     const double F = contact.calibration.referenceForce;
     const double a = contact.calibration.radiusAt(F);
     const double area = std::numbers::pi * a * a;

@@ -1,5 +1,5 @@
 // Disc-average half-space Green's function (reference eq. 2.5) and its non-negative SOE fit (eq. 2.8).
-#include "StationaryKernel.h"
+#include "ConductionKernel.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -101,7 +101,7 @@ Eigen::VectorXd nonNegativeLeastSquares(Eigen::MatrixXd A, const Eigen::VectorXd
 }
 } // namespace
 
-double StationaryKernel::green(double t, double a, double K, double rhoC) noexcept
+double ConductionKernel::green(double t, double a, double K, double rhoC) noexcept
 {
     if (!(t > 0.0))
         return 0.0;
@@ -111,12 +111,12 @@ double StationaryKernel::green(double t, double a, double K, double rhoC) noexce
     return oneD * oneMinusScaledBessel(u);
 }
 
-double StationaryKernel::steadyResistance(double a, double K) noexcept
+double ConductionKernel::steadyResistance(double a, double K) noexcept
 {
     return 8.0 / (3.0 * std::numbers::pi * std::numbers::pi * K * a);
 }
 
-double StationaryKernel::integrateGreen(double t0, double t1, double a, double K, double rhoC, int n) noexcept
+double ConductionKernel::integrateGreen(double t0, double t1, double a, double K, double rhoC, int n) noexcept
 {
     // t = s^2, dt = 2 s ds; near s = 0, G(s^2) 2 s -> 2 / (A e sqrt(pi)), finite and smooth.
     n += n % 2;
@@ -133,7 +133,7 @@ double StationaryKernel::integrateGreen(double t0, double t1, double a, double K
     return sum * h / 3.0;
 }
 
-void StationaryKernel::fit(double a, double K, double rhoC, double dt, const FitOptions& opt)
+void ConductionKernel::fit(double a, double K, double rhoC, double dt, const FitOptions& opt)
 {
     radius_ = a, conductivity_ = K, heatCapacity_ = rhoC, dt_ = dt;
     g0_ = integrateGreen(0.0, dt, a, K, rhoC);
@@ -164,7 +164,7 @@ void StationaryKernel::fit(double a, double K, double rhoC, double dt, const Fit
     c_.assign(c.data(), c.data() + M);
 }
 
-double StationaryKernel::evaluate(double t) const noexcept
+double ConductionKernel::evaluate(double t) const noexcept
 {
     double s = 0.0;
     for (size_t k = 0; k < c_.size(); ++k)
@@ -172,7 +172,7 @@ double StationaryKernel::evaluate(double t) const noexcept
     return s;
 }
 
-double StationaryKernel::integral() const noexcept
+double ConductionKernel::integral() const noexcept
 {
     double s = 0.0;
     for (size_t k = 0; k < c_.size(); ++k)
@@ -180,7 +180,31 @@ double StationaryKernel::integral() const noexcept
     return s;
 }
 
-double StationaryKernel::discreteSteadyResistance() const noexcept
+double ConductionKernel::washedOutResistance(double a, double K, double rhoC, double washoutTime) noexcept
+{
+    if (!(washoutTime > 0.0) || !std::isfinite(washoutTime))
+        return steadyResistance(a, K);
+    // t G(t) e^{-t/tau} is smooth in x = ln t: near 0 it goes as sqrt(t), past tau it dies exponentially.
+    const double x0 = std::log(1e-9 * std::min(washoutTime, a * a * rhoC / K));
+    const double x1 = std::log(60.0 * washoutTime);
+    const int n = 2 * static_cast<int>(std::ceil(40.0 * (x1 - x0))); // even, ~80 points per e-fold
+    const double h = (x1 - x0) / n;
+    auto f = [&](double x)
+    {
+        const double t = std::exp(x);
+        return t * green(t, a, K, rhoC) * std::exp(-t / washoutTime);
+    };
+    double sum = f(x0) + f(x1);
+    for (int i = 1; i < n; ++i)
+        sum += (i % 2 ? 4.0 : 2.0) * f(x0 + i * h);
+    // Below t0 = e^x0 the 1-D limit G = 1 / (A e sqrt(pi t)) integrates to 2 sqrt(t0) / (A e sqrt(pi)).
+    const double t0 = std::exp(x0);
+    const double below =
+        2.0 * std::sqrt(t0) / (std::numbers::pi * a * a * std::sqrt(K * rhoC * std::numbers::pi));
+    return sum * h / 3.0 + below;
+}
+
+double ConductionKernel::discreteSteadyResistance() const noexcept
 {
     double s = g0_;
     for (size_t k = 0; k < c_.size(); ++k)
@@ -188,7 +212,7 @@ double StationaryKernel::discreteSteadyResistance() const noexcept
     return s;
 }
 
-double StationaryKernel::maxRelativeError(double t0, double t1) const noexcept
+double ConductionKernel::maxRelativeError(double t0, double t1) const noexcept
 {
     const int n = std::max(2, static_cast<int>(100.0 * std::log10(t1 / t0)) + 1);
     double worst = 0.0;
@@ -201,7 +225,7 @@ double StationaryKernel::maxRelativeError(double t0, double t1) const noexcept
     return worst;
 }
 
-int StationaryKernel::zeroTerms() const noexcept
+int ConductionKernel::zeroTerms() const noexcept
 {
     return static_cast<int>(std::count(c_.begin(), c_.end(), 0.0));
 }

@@ -1,7 +1,7 @@
 #pragma once
-// Heat conduction into the stationary side of the contact (the string surface, treated as a rosin-like
-// half-space): the disc-average Green's function and its sum-of-exponentials (SOE) approximation.
-// Reference §2.3.1 (eq. 2.5) and §2.5 (eqs. 2.8-2.9); reference script soe.py.
+// Heat conduction from the contact disc into one of the two solids that touch it (the stationary one, and the
+// moving one while it sticks; reference §2.3a): the disc-average Green's function of a half-space and its
+// sum-of-exponentials (SOE) approximation. Reference §2.3.1 (eq. 2.5) and §2.5 (eqs. 2.8-2.9); script soe.py.
 #include <vector>
 
 namespace rosin::physics
@@ -9,7 +9,7 @@ namespace rosin::physics
 
 /// G_avg(t) of a uniformly heated disc on a half-space and an SOE fit G(t) ~ sum_m c_m exp(-t / tau_m).
 /// fit() allocates (call off the audio thread); every const accessor is allocation-free.
-class StationaryKernel
+class ConductionKernel
 {
   public:
     struct FitOptions
@@ -32,6 +32,12 @@ class StationaryKernel
     /// int_0^inf G_avg dt = 8 / (3 pi^2 K a), K/W: mean temperature of a uniformly heated disc per watt
     /// (reference §2.3.1, classical result).
     static double steadyResistance(double radiusM, double conductivity) noexcept;
+
+    /// int_0^inf G_avg(t) exp(-t / washoutTime) dt, K/W: the steady resistance of a surface whose heated
+    /// patch is carried away after ~washoutTime (the moving side while sliding; reference §2.3a). Simpson in
+    /// ln t. washoutTime <= 0 or infinite gives steadyResistance().
+    static double washedOutResistance(double radiusM, double conductivity, double volumetricHeatCapacity,
+                                      double washoutTime) noexcept;
 
     /// int_t0^t1 G_avg dt (K/W) by composite Simpson in s = sqrt(t), which removes the t^-1/2 singularity.
     static double integrateGreen(double t0, double t1, double radiusM, double conductivity,

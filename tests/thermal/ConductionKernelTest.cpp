@@ -5,14 +5,15 @@
 #include <cstdio>
 #include <numbers>
 
+#include "physics/thermal/ConductionKernel.h"
 #include "physics/thermal/ContactParameters.h"
-#include "physics/thermal/StationaryKernel.h"
+#include "physics/thermal/ThermalMaterial.h"
 
 using namespace rosin::physics;
 
 namespace
 {
-const ThermalMaterial kMaterial{};
+const ThermalMaterial kMaterial = materials::rosin;
 constexpr double pi = std::numbers::pi;
 /// Classical mean temperature of a uniformly heated disc on a half-space, per watt: 8 / (3 pi^2 K a).
 double discResistance(double a)
@@ -21,32 +22,32 @@ double discResistance(double a)
 }
 } // namespace
 
-TEST(StationaryKernel, GreenFunctionIntegratesToDiscMeanResistance)
+TEST(ConductionKernel, GreenFunctionIntegratesToDiscMeanResistance)
 {
     for (double a : {200e-6, 250e-6, 500e-6})
     {
         // The integrand decays like t^-3/2; the tail beyond 1e9 s is ~1e-5 of the total.
-        const double I = StationaryKernel::integrateGreen(0.0, 1e9, a, kMaterial.conductivity,
+        const double I = ConductionKernel::integrateGreen(0.0, 1e9, a, kMaterial.conductivity,
                                                           kMaterial.volumetricHeatCapacity, 400000);
         EXPECT_NEAR(I / discResistance(a), 1.0, 1e-3) << "a = " << a;
     }
 }
 
-TEST(StationaryKernel, GreenFunctionShortTimeLimitIsOneDimensional)
+TEST(ConductionKernel, GreenFunctionShortTimeLimitIsOneDimensional)
 {
     // t << a^2/kappa: G -> 1 / (A e sqrt(pi t)) (reference §2.3.1).
     const double a = 500e-6, K = kMaterial.conductivity, rc = kMaterial.volumetricHeatCapacity;
     const double t = 1e-6 * a * a / (K / rc);
     const double oneD = 1.0 / (pi * a * a * std::sqrt(K * rc) * std::sqrt(pi * t));
-    EXPECT_NEAR(StationaryKernel::green(t, a, K, rc) / oneD, 1.0, 2e-3);
+    EXPECT_NEAR(ConductionKernel::green(t, a, K, rc) / oneD, 1.0, 2e-3);
 }
 
-TEST(StationaryKernel, SumOfExponentialsMatchesGreenFunction)
+TEST(ConductionKernel, SumOfExponentialsMatchesGreenFunction)
 {
     for (double a : {250e-6, 500e-6})
         for (double fs : {44100.0, 48000.0, 192000.0})
         {
-            StationaryKernel k;
+            ConductionKernel k;
             k.fit(a, kMaterial.conductivity, kMaterial.volumetricHeatCapacity, 1.0 / fs);
             const double err = k.maxRelativeError(1.0 / fs, 100.0);
             const double integralRatio = k.integral() / discResistance(a);
@@ -65,13 +66,13 @@ TEST(StationaryKernel, SumOfExponentialsMatchesGreenFunction)
         }
 }
 
-TEST(StationaryKernel, FirstStepWeightMatchesOneDimensionalIntegral)
+TEST(ConductionKernel, FirstStepWeightMatchesOneDimensionalIntegral)
 {
     // int_0^dt G ~ 2 sqrt(dt) / (A e sqrt(pi)) for dt << a^2/kappa (reference §2.5).
     const double a = 500e-6, K = kMaterial.conductivity, rc = kMaterial.volumetricHeatCapacity;
     for (double fs : {44100.0, 192000.0})
     {
-        StationaryKernel k;
+        ConductionKernel k;
         k.fit(a, K, rc, 1.0 / fs);
         const double oneD = 2.0 * std::sqrt(1.0 / fs) / (pi * a * a * std::sqrt(K * rc) * std::sqrt(pi));
         EXPECT_NEAR(k.firstStepWeight() / oneD, 1.0, 0.01);
