@@ -78,8 +78,8 @@ TEST_F(GuettlerScan, PlasticBeatsReconstructed)
 // length, black for 20 periods or more, so "successful" there can mean "reaches Helmholtz motion at all".
 // Counted that way, whole 0.5 s trials end in Helmholtz motion in 18.0 % of the 90,000 cells (measured with
 // `rosin scan guettler --friction classical --beta 0.0899 --grid 300 --full-trials`), the seed's order. Here
-// on the 20 x 20 grid: most of the classical curve's Helmholtz cells take longer than the cap (measured: 19.0 %
-// end in Helmholtz motion, 2.8 % reach it within 20 periods), and the share is of the seed's order.
+// on the 20 x 20 grid: most of the classical curve's Helmholtz cells take longer than the cap (measured: 19.0
+// % end in Helmholtz motion, 2.8 % reach it within 20 periods), and the share is of the seed's order.
 TEST(GuettlerScanWholeTrials, MostClassicalHelmholtzCellsTakeLongerThanTheCap)
 {
     ScanSpec spec = defaultSpec(ScanKind::Guettler);
@@ -97,9 +97,10 @@ TEST(GuettlerScanWholeTrials, MostClassicalHelmholtzCellsTakeLongerThanTheCap)
     const double cells = beta["cells"].get<double>();
     const double endsInHelmholtz = beta["helmholtzCells"].get<double>() / cells;
     const double withinCap = beta["reachedCells"].get<double>() / cells;
-    std::printf("[figure] classical, beta 0.0899, whole 0.5 s trials: %.1f %% of cells end in Helmholtz motion, "
-                "%.1f %% reach it within 20 periods (seed 001: roughly a quarter successful)\n",
-                100.0 * endsInHelmholtz, 100.0 * withinCap);
+    std::printf(
+        "[figure] classical, beta 0.0899, whole 0.5 s trials: %.1f %% of cells end in Helmholtz motion, "
+        "%.1f %% reach it within 20 periods (seed 001: roughly a quarter successful)\n",
+        100.0 * endsInHelmholtz, 100.0 * withinCap);
     EXPECT_GT(endsInHelmholtz, 4.0 * withinCap);
     EXPECT_GT(endsInHelmholtz, 0.125); // the seed's order: within a factor 2 of a quarter
     EXPECT_LT(endsInHelmholtz, 0.5);

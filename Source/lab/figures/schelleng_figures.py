@@ -93,13 +93,15 @@ def draw_theory(ax, scan, outline=False):
     theory = scan.meta.get("theory") or {}
     beta = np.geomspace(*ax.get_xlim(), 200)
     lines = []
-    for key, label, colour in (
-            ("fmaxCoefficient", "Schelleng max (eq. 6.2)", style.MAX_LINE_COLOUR),
-            ("fminCoefficient", "Schelleng/Raman min (eq. 6.3)", style.MIN_LINE_COLOUR)):
+    for key, label, colour, dash in (
+            ("fmaxCoefficient", "Schelleng max (eq. 6.2)", style.MAX_LINE_COLOUR, "-"),
+            ("fminTotalCoefficient", "Schelleng min, body + string losses (eq. 6.5)",
+             style.MIN_LINE_COLOUR, "-"),
+            ("fminCoefficient", "Schelleng/Raman min, body only (eq. 6.5)", style.MIN_LINE_COLOUR, ":")):
         coefficient = theory.get(key)
         if isinstance(coefficient, (int, float)) and coefficient > 0:
             power = 1 if key == "fmaxCoefficient" else 2
-            lines += ax.plot(beta, coefficient / beta ** power, color=colour, lw=1.8,
+            lines += ax.plot(beta, coefficient / beta ** power, dash, color=colour, lw=1.8,
                              label=f"{label}: {coefficient:.3g}/β" + ("²" if power == 2 else ""))
     boundaries = scan.meta.get("boundaries") or {}
     for key, colour in (("upper", style.MAX_LINE_COLOUR), ("lower", style.MIN_LINE_COLOUR)):

@@ -30,6 +30,7 @@ json theoryJson(const ScanSpec& spec)
         j["bowSpeed"] = spec.second.front();
         j["fmaxCoefficient"] = t.fmaxCoefficient;
         j["fminCoefficient"] = t.fminCoefficient;
+        j["fminTotalCoefficient"] = t.fminTotalCoefficient;
         return j;
     }
     json wedge = json::array();

@@ -53,6 +53,11 @@ double fminCoefficient(const std::function<std::complex<double>(double)>& admitt
     return 2.0 * vb * Z0 * Z0 / (kPi * kPi * dmu) * worst;
 }
 
+double stringLossConductance(const physics::StringParameters& string, int n)
+{
+    return kPi * n * string.lossFactor(n, string.length, false) / (2.0 * string.impedance());
+}
+
 GuettlerWedge guettlerWedge(double beta, double ms, double md, double PZ0)
 {
     const double scale = beta * (1.0 - beta) / PZ0;
@@ -80,6 +85,14 @@ Theory scanTheory(const ScanSpec& spec)
     const double vb = spec.kind == ScanKind::Schelleng ? spec.second.front() : 1.0;
     t.fmaxCoefficient = 2.0 * t.Z0 * vb / dmu;
     const physics::BodyParameters body = physics::bodyByName(spec.model.body);
+    const double f0 = s.fundamental();
+    t.fminTotalCoefficient = fminCoefficient(
+        [&](double f)
+        {
+            const int n = std::max(1, static_cast<int>(std::lround(f / f0)));
+            return (body.rigid() ? std::complex<double>{} : body.admittance(f)) + stringLossConductance(s, n);
+        },
+        f0, t.Z0, vb, dmu);
     if (!body.rigid())
     {
         t.fminCoefficient =
