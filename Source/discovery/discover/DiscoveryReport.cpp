@@ -119,13 +119,26 @@ nlohmann::json discoveryMaps(const Discovery& d, const Dataset& dataset)
                               {"measured", values(d.measured[t])},
                               {"baseline", values(d.baseline[t])},
                               {"final", values(d.final[t])}});
-    nlohmann::json changed = nlohmann::json::array();
+    // Maps are drawn for every feature that disagrees before any effect (whatever the verdict: a failure
+    // needs its picture most) and for every feature an adopted effect changed.
+    constexpr double kMappedGap = 0.2;
+    nlohmann::json changed = nlohmann::json::array(), disagreeing = nlohmann::json::array();
+    nlohmann::json units = nlohmann::json::object();
     for (std::size_t f = 0; f < kFeatureCount; ++f)
-        if (d.gapBefore.count[f] >= kMinTrialsForGap &&
-            std::abs(d.gapBefore.gap[f] - d.gapAfter.gap[f]) > 0.2)
+    {
+        units[featureName(f)] = featureUnit(f);
+        if (d.gapBefore.count[f] < kMinTrialsForGap)
+            continue;
+        if (std::abs(d.gapBefore.gap[f] - d.gapAfter.gap[f]) > kMappedGap)
             changed.push_back(featureName(f));
-    return {{"motionAxis", d.grid.kind == ScanKind::Schelleng ? "bow speed (m/s)" : "acceleration (m/s^2)"},
+        if (d.gapBefore.gap[f] > kMappedGap)
+            disagreeing.push_back(featureName(f));
+    }
+    return {{"motionAxis", d.grid.kind == ScanKind::Schelleng ? "bow speed (m/s)" : "bow acceleration (m/s^2)"},
             {"changed", changed},
+            {"disagreeing", disagreeing},
+            {"units", units},
+            {"adoptedEffects", d.stepGaps.size()},
             {"trials", trials}};
 }
 
@@ -193,8 +206,11 @@ std::string discoveryMarkdown(const Discovery& d, const Dataset& dataset,
         m += "\n\n";
     }
     m += "## Figures\n\n";
+    const auto maps = discoveryMaps(d, dataset);
+    const bool anythingToMap = !maps["disagreeing"].empty() || !maps["changed"].empty();
     if (figures.empty())
-        m += "No figures were made (the figure script or matplotlib was not available).\n";
+        m += anythingToMap ? "No figures were made (the figure script or matplotlib was not available).\n"
+                           : "No feature disagrees beyond its scatter, so there is nothing to map.\n";
     for (const auto& f : figures)
         m += "![" + f + "](" + f + ")\n\n";
     m += "\nMethod: training and held-out halves are a checkerboard over the grid (" +
