@@ -44,26 +44,41 @@ juce::StringArray frictionChoices()
 }
 } // namespace
 
+namespace defaults
+{
+constexpr float bowForce = 1.0f, bowSpeed = 0.1f, attackAcceleration = 2.0f, beta = 0.0899f;
+constexpr float ambientCelsius = 20.0f;
+} // namespace defaults
+
+/// A raw parameter value, or `fallback` when it is not finite: a host or a damaged project can deliver NaN,
+/// and one NaN in a smoother would silence the engine for good.
+float finiteOr(const std::atomic<float>* value, float fallback) noexcept
+{
+    const float x = value->load();
+    return std::isfinite(x) ? x : fallback;
+}
+
 juce::AudioProcessorValueTreeState::ParameterLayout createParameterLayout()
 {
     namespace r = gesture::ranges;
     juce::AudioProcessorValueTreeState::ParameterLayout layout;
     layout.add(std::make_unique<juce::AudioParameterFloat>(
-        pid(ids::bowForce), "Bow force", physicalRange(r::bowForce, 1.0f), 1.0f, unit("N", 3)));
+        pid(ids::bowForce), "Bow force", physicalRange(r::bowForce, 1.0f), defaults::bowForce, unit("N", 3)));
+    layout.add(std::make_unique<juce::AudioParameterFloat>(pid(ids::bowSpeed), "Bow speed",
+                                                           physicalRange(r::bowSpeed, 0.1f),
+                                                           defaults::bowSpeed, unit("m/s", 3)));
     layout.add(std::make_unique<juce::AudioParameterFloat>(
-        pid(ids::bowSpeed), "Bow speed", physicalRange(r::bowSpeed, 0.1f), 0.1f, unit("m/s", 3)));
+        pid(ids::attackAcceleration), "Attack acceleration", physicalRange(r::attackAcceleration, 1.0f),
+        defaults::attackAcceleration, unit("m/s^2", 2)));
     layout.add(std::make_unique<juce::AudioParameterFloat>(
-        pid(ids::attackAcceleration), "Attack acceleration", physicalRange(r::attackAcceleration, 1.0f), 2.0f,
-        unit("m/s^2", 2)));
-    layout.add(std::make_unique<juce::AudioParameterFloat>(
-        pid(ids::beta), "Bow position (beta)", physicalRange(r::beta, 0.1f), 0.0899f, unit("", 4)));
+        pid(ids::beta), "Bow position (beta)", physicalRange(r::beta, 0.1f), defaults::beta, unit("", 4)));
     layout.add(
         std::make_unique<juce::AudioParameterChoice>(pid(ids::friction), "Friction law", frictionChoices(),
                                                      static_cast<int>(physics::FrictionModel::Plastic)));
     layout.add(std::make_unique<juce::AudioParameterBool>(pid(ids::body), "Body", true));
     layout.add(std::make_unique<juce::AudioParameterFloat>(
         pid(ids::ambientTemperature), "Ambient temperature", juce::NormalisableRange<float>(0.0f, 40.0f),
-        20.0f, unit("C", 1)));
+        defaults::ambientCelsius, unit("C", 1)));
     layout.add(std::make_unique<juce::AudioParameterFloat>(pid(ids::outputLevel), "Output level",
                                                            juce::NormalisableRange<float>(-60.0f, 12.0f),
                                                            kDefaultOutputLevelDb, unit("dB", 1)));
@@ -94,27 +109,29 @@ ParameterReader::ParameterReader(juce::AudioProcessorValueTreeState& state)
 InstrumentKey ParameterReader::readKey() const noexcept
 {
     InstrumentKey key;
-    key.instrument = juce::jlimit(0, 1, static_cast<int>(std::lround(instrument_->load())));
+    key.instrument = juce::jlimit(0, 1, static_cast<int>(std::lround(finiteOr(instrument_, 0.0f))));
     key.friction = static_cast<physics::FrictionModel>(
-        juce::jlimit(0, 5, static_cast<int>(std::lround(friction_->load()))));
+        juce::jlimit(0, 5,
+                     static_cast<int>(std::lround(
+                         finiteOr(friction_, static_cast<float>(physics::FrictionModel::Plastic))))));
     key.body = body_->load() >= 0.5f;
-    key.ambientCelsius = ambientTemperature_->load();
+    key.ambientCelsius = finiteOr(ambientTemperature_, defaults::ambientCelsius);
     return key;
 }
 
 ParameterSnapshot ParameterReader::read(int stringCount) const noexcept
 {
     ParameterSnapshot s;
-    s.gesture.bowForce = bowForce_->load();
-    s.gesture.bowSpeed = bowSpeed_->load();
-    s.gesture.attackAcceleration = attackAcceleration_->load();
-    s.gesture.beta = beta_->load();
-    s.stringChoice = juce::jlimit(0, 4, static_cast<int>(std::lround(string_->load())));
+    s.gesture.bowForce = finiteOr(bowForce_, defaults::bowForce);
+    s.gesture.bowSpeed = finiteOr(bowSpeed_, defaults::bowSpeed);
+    s.gesture.attackAcceleration = finiteOr(attackAcceleration_, defaults::attackAcceleration);
+    s.gesture.beta = finiteOr(beta_, defaults::beta);
+    s.stringChoice = juce::jlimit(0, 4, static_cast<int>(std::lround(finiteOr(string_, 0.0f))));
     // String I is the highest, as string players number them; the controller counts from the lowest.
     s.gesture.stringOverride = s.stringChoice == 0 ? -1 : juce::jmax(0, stringCount - s.stringChoice);
     s.key = readKey();
     s.intonationByEar = intonation_->load() >= 0.5f;
-    s.outputGain = std::pow(10.0, outputLevel_->load() / 20.0);
+    s.outputGain = std::pow(10.0, finiteOr(outputLevel_, kDefaultOutputLevelDb) / 20.0);
     return s;
 }
 

@@ -1,5 +1,7 @@
 #include "RosinProcessor.h"
 
+#include "SavedState.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -351,10 +353,17 @@ void RosinProcessor::getStateInformation(juce::MemoryBlock& destData)
 
 void RosinProcessor::setStateInformation(const void* data, int sizeInBytes)
 {
+    if (const auto problem = unparseableState(data, sizeInBytes))
+    {
+        std::cerr << "rosin: state not restored: " << *problem << "\n";
+        return;
+    }
     const auto xml = getXmlFromBinary(data, sizeInBytes);
     if (xml == nullptr || !xml->hasTagName(kStateType))
         return;
     juce::ValueTree tree = juce::ValueTree::fromXml(*xml);
+    for (const auto& message : sanitiseParameterValues(tree, state_))
+        std::cerr << "rosin: state: " << message << "\n";
     // Version 1 is the only format so far; later versions migrate here before replaceState.
     if (static_cast<int>(tree.getProperty("stateVersion", 0)) > kStateVersion)
         std::cerr << "rosin: state from a newer version; reading what is known\n";
@@ -368,6 +377,7 @@ void RosinProcessor::setStateInformation(const void* data, int sizeInBytes)
     tree.removeProperty("stateVersion", nullptr);
     tree.removeProperty("program", nullptr);
     state_.replaceState(tree);
+    refreshHostValues(state_);
 }
 
 } // namespace rosin::plugin
