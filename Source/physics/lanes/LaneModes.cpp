@@ -3,11 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(ROSIN_NO_MULTIVERSION)
-#define ROSIN_LANE_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
-#else
-#define ROSIN_LANE_CLONES
-#endif
+#include "../modal/KernelDispatch.h"
 
 namespace rosin::physics
 {
@@ -51,7 +47,8 @@ constexpr int kUnroll = 4;
 
 // `inputs` gains (1 or 2) and `outputs` weights (1 to 3): w~ <- p (w~ + x) per mode, outputs summed per lane.
 template <int inputs, int outputs>
-inline void advance(LaneModes& bank, const LaneValues& inA, const LaneValues& inB, LaneValues* sums) noexcept
+inline __attribute__((always_inline)) void advance(LaneModes& bank, const LaneValues& inA,
+                                                   const LaneValues& inB, LaneValues* sums) noexcept
 {
     // Copied in and out with memcpy: no function takes or returns a vector, so no ABI depends on AVX.
     LaneVector a, b;
@@ -87,9 +84,14 @@ inline void advance(LaneModes& bank, const LaneValues& inA, const LaneValues& in
 }
 } // namespace
 
-ROSIN_LANE_CLONES
-void advanceTwoInputsTwoOutputs(LaneModes& bank, const LaneValues& a, const LaneValues& b, LaneValues& s1,
-                                LaneValues& s2) noexcept
+namespace
+{
+// The lanes stay at x86-64-v3 at most: eight doubles fill an AVX2 pair, and AVX-512 was not faster here.
+const SimdLevel kLevel = simdLevel() == SimdLevel::V4 ? SimdLevel::V3 : simdLevel();
+
+ROSIN_KERNEL_BODY void advanceTwoInputsTwoOutputsBody(LaneModes& bank, const LaneValues& a,
+                                                      const LaneValues& b, LaneValues& s1,
+                                                      LaneValues& s2) noexcept
 {
     LaneValues sums[2];
     advance<2, 2>(bank, a, b, sums);
@@ -97,21 +99,48 @@ void advanceTwoInputsTwoOutputs(LaneModes& bank, const LaneValues& a, const Lane
     s2 = sums[1];
 }
 
-ROSIN_LANE_CLONES
-void advanceOneInputOneOutput(LaneModes& bank, const LaneValues& a, LaneValues& s1) noexcept
+ROSIN_KERNEL_BODY void advanceOneInputOneOutputBody(LaneModes& bank, const LaneValues& a,
+                                                    LaneValues& s1) noexcept
 {
     advance<1, 1>(bank, a, a, &s1);
 }
 
-ROSIN_LANE_CLONES
-void advanceOneInputThreeOutputs(LaneModes& bank, const LaneValues& a, LaneValues& s1, LaneValues& s2,
-                                 LaneValues& s3) noexcept
+ROSIN_KERNEL_BODY void advanceOneInputThreeOutputsBody(LaneModes& bank, const LaneValues& a, LaneValues& s1,
+                                                       LaneValues& s2, LaneValues& s3) noexcept
 {
     LaneValues sums[3];
     advance<1, 3>(bank, a, a, sums);
     s1 = sums[0];
     s2 = sums[1];
     s3 = sums[2];
+}
+
+ROSIN_KERNEL_VARIANTS(void, advanceTwoInputsTwoOutputs,
+                      (LaneModes & bank, const LaneValues& a, const LaneValues& b, LaneValues& s1,
+                       LaneValues& s2),
+                      (bank, a, b, s1, s2))
+ROSIN_KERNEL_VARIANTS(void, advanceOneInputOneOutput, (LaneModes & bank, const LaneValues& a, LaneValues& s1),
+                      (bank, a, s1))
+ROSIN_KERNEL_VARIANTS(void, advanceOneInputThreeOutputs,
+                      (LaneModes & bank, const LaneValues& a, LaneValues& s1, LaneValues& s2, LaneValues& s3),
+                      (bank, a, s1, s2, s3))
+} // namespace
+
+void advanceTwoInputsTwoOutputs(LaneModes& bank, const LaneValues& a, const LaneValues& b, LaneValues& s1,
+                                LaneValues& s2) noexcept
+{
+    ROSIN_KERNEL_DISPATCH(kLevel, advanceTwoInputsTwoOutputs, (bank, a, b, s1, s2));
+}
+
+void advanceOneInputOneOutput(LaneModes& bank, const LaneValues& a, LaneValues& s1) noexcept
+{
+    ROSIN_KERNEL_DISPATCH(kLevel, advanceOneInputOneOutput, (bank, a, s1));
+}
+
+void advanceOneInputThreeOutputs(LaneModes& bank, const LaneValues& a, LaneValues& s1, LaneValues& s2,
+                                 LaneValues& s3) noexcept
+{
+    ROSIN_KERNEL_DISPATCH(kLevel, advanceOneInputThreeOutputs, (bank, a, s1, s2, s3));
 }
 
 } // namespace rosin::physics

@@ -1,19 +1,18 @@
 #include "ModalKernels.h"
 
-// Function multi-versioning: GCC and Clang on x86-64 build one clone per listed level and choose at load
-// time.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(ROSIN_NO_MULTIVERSION)
-#define ROSIN_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define ROSIN_VECTOR_CLONES
-#endif
+#include "KernelDispatch.h"
 
 namespace rosin::physics
 {
 
-ROSIN_VECTOR_CLONES
-TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const ModalReal* gainA, double a, const ModalReal* gainB,
-                                   double b, const OutputWeights& o1, const OutputWeights& o2) noexcept
+namespace
+{
+const SimdLevel kLevel = simdLevel(); // chosen once, at load time
+
+ROSIN_KERNEL_BODY TwoSums advanceTwoInputsTwoOutputsBody(ModalBank& bank, const ModalReal* gainA, double a,
+                                                         const ModalReal* gainB, double b,
+                                                         const OutputWeights& o1,
+                                                         const OutputWeights& o2) noexcept
 {
     const int n = bank.size();
     ModalReal* __restrict wr = bank.wRe.data();
@@ -42,9 +41,8 @@ TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const ModalReal* gainA, doub
     return {s1, s2};
 }
 
-ROSIN_VECTOR_CLONES
-double advanceOneInputOneOutput(ModalBank& bank, const ModalReal* gain, double a,
-                                const OutputWeights& o1) noexcept
+ROSIN_KERNEL_BODY double advanceOneInputOneOutputBody(ModalBank& bank, const ModalReal* gain, double a,
+                                                      const OutputWeights& o1) noexcept
 {
     const int n = bank.size();
     ModalReal* __restrict wr = bank.wRe.data();
@@ -70,10 +68,9 @@ double advanceOneInputOneOutput(ModalBank& bank, const ModalReal* gain, double a
     return s1;
 }
 
-ROSIN_VECTOR_CLONES
-ThreeSums advanceOneInputThreeOutputs(ModalBank& bank, const ModalReal* gain, double a,
-                                      const OutputWeights& o1, const OutputWeights& o2,
-                                      const OutputWeights& o3) noexcept
+ROSIN_KERNEL_BODY ThreeSums advanceOneInputThreeOutputsBody(ModalBank& bank, const ModalReal* gain, double a,
+                                                            const OutputWeights& o1, const OutputWeights& o2,
+                                                            const OutputWeights& o3) noexcept
 {
     const int n = bank.size();
     ModalReal* __restrict wr = bank.wRe.data();
@@ -103,6 +100,38 @@ ThreeSums advanceOneInputThreeOutputs(ModalBank& bank, const ModalReal* gain, do
         s3 += o3r[k] * nr - o3i[k] * ni;
     }
     return {s1, s2, s3};
+}
+
+ROSIN_KERNEL_VARIANTS(TwoSums, advanceTwoInputsTwoOutputs,
+                      (ModalBank & bank, const ModalReal* gainA, double a, const ModalReal* gainB, double b,
+                       const OutputWeights& o1, const OutputWeights& o2),
+                      (bank, gainA, a, gainB, b, o1, o2))
+ROSIN_KERNEL_VARIANTS(double, advanceOneInputOneOutput,
+                      (ModalBank & bank, const ModalReal* gain, double a, const OutputWeights& o1),
+                      (bank, gain, a, o1))
+ROSIN_KERNEL_VARIANTS(ThreeSums, advanceOneInputThreeOutputs,
+                      (ModalBank & bank, const ModalReal* gain, double a, const OutputWeights& o1,
+                       const OutputWeights& o2, const OutputWeights& o3),
+                      (bank, gain, a, o1, o2, o3))
+} // namespace
+
+TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const ModalReal* gainA, double a, const ModalReal* gainB,
+                                   double b, const OutputWeights& o1, const OutputWeights& o2) noexcept
+{
+    ROSIN_KERNEL_DISPATCH(kLevel, advanceTwoInputsTwoOutputs, (bank, gainA, a, gainB, b, o1, o2));
+}
+
+double advanceOneInputOneOutput(ModalBank& bank, const ModalReal* gain, double a,
+                                const OutputWeights& o1) noexcept
+{
+    ROSIN_KERNEL_DISPATCH(kLevel, advanceOneInputOneOutput, (bank, gain, a, o1));
+}
+
+ThreeSums advanceOneInputThreeOutputs(ModalBank& bank, const ModalReal* gain, double a,
+                                      const OutputWeights& o1, const OutputWeights& o2,
+                                      const OutputWeights& o3) noexcept
+{
+    ROSIN_KERNEL_DISPATCH(kLevel, advanceOneInputThreeOutputs, (bank, gain, a, o1, o2, o3));
 }
 
 double sumOutput(const ModalBank& bank, const OutputWeights& o) noexcept

@@ -1,0 +1,44 @@
+#pragma once
+// Manual function multiversioning for the hot kernels: each kernel body is compiled for x86-64-v4,
+// x86-64-v3 and the baseline, and a call takes the level SimdLevel.h chose (the best this CPU supports, or
+// the one ROSIN_SIMD forces). One well-predicted branch per call, as GCC's own target_clones dispatch costs.
+//
+// ROSIN_KERNEL_VARIANTS(ret, name, (params), (args)) defines name##V4, name##V3 and name##Base from the
+// always-inlined name##Body; ROSIN_KERNEL_DISPATCH(level, name, (args)) calls the one for `level`.
+#include "SimdLevel.h"
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(ROSIN_NO_MULTIVERSION)
+#define ROSIN_KERNEL_BODY static inline __attribute__((always_inline))
+#define ROSIN_KERNEL_VARIANTS(ret, name, params, args)                                                       \
+    __attribute__((target("arch=x86-64-v4"))) static ret name##V4 params noexcept                            \
+    {                                                                                                        \
+        return name##Body args;                                                                              \
+    }                                                                                                        \
+    __attribute__((target("arch=x86-64-v3"))) static ret name##V3 params noexcept                            \
+    {                                                                                                        \
+        return name##Body args;                                                                              \
+    }                                                                                                        \
+    static ret name##Base params noexcept                                                                    \
+    {                                                                                                        \
+        return name##Body args;                                                                              \
+    }
+#define ROSIN_KERNEL_DISPATCH(level, name, args)                                                             \
+    switch (level)                                                                                           \
+    {                                                                                                        \
+    case ::rosin::physics::SimdLevel::V4:                                                                    \
+        return name##V4 args;                                                                                \
+    case ::rosin::physics::SimdLevel::V3:                                                                    \
+        return name##V3 args;                                                                                \
+    case ::rosin::physics::SimdLevel::Default:                                                               \
+        break;                                                                                               \
+    }                                                                                                        \
+    return name##Base args
+#else
+#define ROSIN_KERNEL_BODY static inline
+#define ROSIN_KERNEL_VARIANTS(ret, name, params, args)                                                       \
+    static ret name##Base params noexcept                                                                    \
+    {                                                                                                        \
+        return name##Body args;                                                                              \
+    }
+#define ROSIN_KERNEL_DISPATCH(level, name, args) return ((void)(level), name##Base args)
+#endif
