@@ -101,6 +101,11 @@ trial:
                            transient is decided (44 periods after the first full flyback, or as soon as
                            Helmholtz motion can no longer start within 20 periods), and the regime column
                            is then that of the 20 periods before that point
+  --classify state|bridge-force
+                           how slips are found for the regime and the transient: from the solver's state
+                           (default: full flybacks of the bowed point) or from the bridge force alone, as
+                           seed 001 treats measured and simulated trials alike (guettler trials then end
+                           with their transient window at the latest)
 running:
   --out DIR                output folder (required; created if missing)
   --threads N              threads (default: every core)

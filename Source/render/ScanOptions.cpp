@@ -38,7 +38,7 @@ const std::vector<std::string> kValueOptions = {"--preset",         "--friction"
                                                 "--bow-speed",      "--beta-range",  "--ramp",
                                                 "--duration",       "--sample-rate", "--threads",
                                                 "--shard",          "--out",         "--layer-thickness",
-                                                "--contact-radius", "--contact"};
+                                                "--contact-radius", "--contact",     "--classify"};
 const std::vector<std::string> kFlags = {
     "--help",         "-h",           "--mpi",          "--no-figures", "--no-progress", "--finger-damping",
     "--rigid-bridge", "--no-torsion", "--no-stiffness", "--full-trials"};
@@ -248,6 +248,16 @@ void trial(const Values& v, scan::ScanSpec& s)
         if (s.kind != ScanKind::Guettler)
             bad("--full-trials", "a guettler scan (schelleng trials always run whole)", "schelleng");
         s.trialEnd = scan::GuettlerTrialEnd::Whole;
+    }
+    if (const auto* c = v.get("--classify"))
+    {
+        if (*c != "state" && *c != "bridge-force")
+            bad("--classify", "state or bridge-force", *c);
+        s.classification =
+            *c == "bridge-force" ? scan::Classification::BridgeForce : scan::Classification::State;
+        if (s.classification == scan::Classification::BridgeForce &&
+            s.trialEnd == scan::GuettlerTrialEnd::WhenDecided)
+            s.trialEnd = scan::GuettlerTrialEnd::AfterWindow;
     }
     if (s.kind == ScanKind::Schelleng && !(s.rampSeconds < s.trialSeconds))
         bad("--ramp",

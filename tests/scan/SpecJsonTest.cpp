@@ -96,3 +96,24 @@ TEST(SpecJson, AnUnknownTrialEndRuleNamesTheField)
         EXPECT_NE(std::string(e.what()).find("decided"), std::string::npos);
     }
 }
+
+TEST(SpecJson, ClassificationIsWrittenOnlyWhenNotTheDefault)
+{
+    ScanSpec s = defaultSpec(ScanKind::Guettler);
+    EXPECT_FALSE(specToJson(s).contains("classification")); // older specs read back byte-identical
+    EXPECT_EQ(specFromJson(specToJson(s), "a.json").classification, Classification::State);
+    s.classification = Classification::BridgeForce;
+    nlohmann::json j = specToJson(s);
+    EXPECT_EQ(j.at("classification"), "bridge-force");
+    EXPECT_EQ(specFromJson(j, "b.json").classification, Classification::BridgeForce);
+    j["classification"] = "guess";
+    try
+    {
+        specFromJson(j, "c.json");
+        FAIL() << "an unknown classification was accepted";
+    }
+    catch (const rosin::config::ConfigError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("classification"), std::string::npos) << e.what();
+    }
+}

@@ -75,6 +75,27 @@ void addTransient(const std::vector<physics::VoiceSample>& samples, const TrialC
         r.transientPeriods = transient.periods;
     r.failure = transient.failure;
 }
+
+// The bridge-force variant of addTransient: onsets found in the force, the window from the first of them.
+void addTransientFromForce(const std::vector<double>& force, const TrialContext& c, CellResult& r)
+{
+    const double nominal = c.periodSamples;
+    auto onsets = lab::slipOnsetsFromBridgeForce(force, nominal);
+    if (onsets.empty())
+        return;
+    const double window = static_cast<double>(onsets.front()) + 2.0 * kTransientCapPeriods * nominal;
+    const auto end = static_cast<std::size_t>(std::min(static_cast<double>(force.size()), std::ceil(window)));
+    std::erase_if(onsets, [end](std::size_t o) { return o >= end; });
+    const auto half = static_cast<std::size_t>(std::round(kTransientCapPeriods * nominal));
+    const auto late = lab::classifyFromBridgeForce(force, nominal, {end - std::min(end, half), end});
+    lab::TransientOptions t;
+    t.capPeriods = kTransientCapPeriods;
+    t.windowEnd = end;
+    const auto transient = lab::measureTransient(onsets, transientPeriod(late, nominal), t);
+    if (!transient.insufficientData)
+        r.transientPeriods = transient.periods;
+    r.failure = transient.failure;
+}
 } // namespace
 
 CellResult analyseTrial(const std::vector<physics::VoiceSample>& samples, const TrialContext& c)
@@ -86,14 +107,25 @@ CellResult analyseTrial(const std::vector<physics::VoiceSample>& samples, const 
     r.second = c.cell.second;
     addFirstSlip(samples, c, r);
 
-    const auto steady = lab::classifyFromVoice(samples, c.periodSamples, steadyWindow(samples.size(), c));
+    const auto window = steadyWindow(samples.size(), c);
+    lab::RegimeAnalysis steady;
+    if (c.classification == Classification::BridgeForce)
+        steady =
+            lab::classifyFromBridgeForce(lab::forceAndState(samples).bridgeForce, c.periodSamples, window);
+    else
+        steady = lab::classifyFromVoice(samples, c.periodSamples, window);
     r.regime = steady.regime;
     if (steady.onsetCount >= 2)
         r.slipsPerPeriod = steady.slipsPerPeriod;
     if (steady.measuredPeriod > 0.0)
         r.pitchCents = steady.pitchCents;
 
-    addTransient(samples, c, r);
+    if (c.kind == ScanKind::Schelleng)
+        addTransient(samples, c, r); // a Schelleng row's transient is informative only; kept from the state
+    else if (c.classification == Classification::BridgeForce)
+        addTransientFromForce(lab::forceAndState(samples).bridgeForce, c, r);
+    else
+        addTransient(samples, c, r);
     return r;
 }
 

@@ -16,6 +16,10 @@
 //    over the window's second half when that is one-slip-per-period motion within +-10 % of the nominal P
 //    (Helmholtz or S-motion: near F_max a string on a body is flattened by a few %, which the 5 % tolerance
 //    about the nominal P would count as failure), else the nominal P = 1/f0.
+// With Classification::BridgeForce the regime and the transient come from the bridge force alone, with the
+// analyses a measurement gets (lab::classifyFromBridgeForce, lab::slipOnsetsFromBridgeForce and the same
+// reference-7.3 transient rule on those onsets, the window anchored at the first onset); the first slip stays
+// the solver's (the bridge-force first-slip analysis needs the high-pass a measurement has).
 #include <cstddef>
 #include <vector>
 
@@ -46,6 +50,7 @@ struct TrialContext
     double sampleRate = 48000.0;
     double periodSamples = 0.0; ///< nominal P = fs / f0
     std::size_t rampEnd = 0;    ///< first sample at the final bow speed (Schelleng)
+    Classification classification = Classification::State;
 };
 
 CellResult analyseTrial(const std::vector<physics::VoiceSample>& samples, const TrialContext& context);

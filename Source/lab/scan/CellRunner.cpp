@@ -83,6 +83,7 @@ CellResult CellRunner::finish(const Lane& lane) const
     context.sampleRate = spec_.sampleRate;
     context.periodSamples = periodSamples_;
     context.rampEnd = lane.protocol->rampEnd();
+    context.classification = spec_.classification;
     return analyseTrial(samples_[static_cast<std::size_t>(lane.index)], context);
 }
 

@@ -5,6 +5,11 @@
 namespace rosin::scan
 {
 
+const char* classificationName(Classification c) noexcept
+{
+    return c == Classification::BridgeForce ? "bridge-force" : "state";
+}
+
 const char* kindName(ScanKind kind) noexcept
 {
     return kind == ScanKind::Schelleng ? "schelleng" : "guettler";

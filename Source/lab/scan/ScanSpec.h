@@ -34,6 +34,15 @@ enum class GuettlerTrialEnd
 /// "whole", "window", "decided".
 const char* trialEndName(GuettlerTrialEnd end) noexcept;
 
+/// How a trial's slips are found for its regime and transient (CellAnalysis.h).
+enum class Classification
+{
+    State,      ///< from the solver's sticking state and bow-point velocity (full flybacks)
+    BridgeForce ///< from the bridge force alone, as seed 001 treats measured and simulated trials alike
+};
+/// "state", "bridge-force".
+const char* classificationName(Classification c) noexcept;
+
 struct ScanSpec
 {
     ScanKind kind = ScanKind::Guettler;
@@ -45,6 +54,9 @@ struct ScanSpec
     double rampSeconds = 0.0;
     /// Guettler: where each trial ends (TrialEnd.h). WhenDecided by default; Whole with `--full-trials`.
     GuettlerTrialEnd trialEnd = GuettlerTrialEnd::WhenDecided;
+    /// How slips are found. BridgeForce trials end at the latest with their transient window (the "decided"
+    /// rule follows the solver's flybacks, which the bridge force need not agree with).
+    Classification classification = Classification::State;
     std::vector<double> betas;
     std::vector<double> forces; ///< N
     std::vector<double> second; ///< accelerations, m/s^2 (Guettler), or bow speeds, m/s (Schelleng)

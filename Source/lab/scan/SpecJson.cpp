@@ -168,23 +168,27 @@ GuettlerTrialEnd readTrialEnd(const Reader& r, const json& j, const std::string&
 json specToJson(const ScanSpec& s)
 {
     const ModelSpec& m = s.model;
-    return {{"format", kFormat},
-            {"kind", kindName(s.kind)},
-            {"preset", m.preset},
-            {"friction", m.friction},
-            {"string", stringJson(m.string)},
-            {"body", m.body},
-            {"contact", contactJson(m.contact)},
-            {"torsion", m.torsion},
-            {"bendingStiffness", m.bendingStiffness},
-            {"fingerDamping", m.fingerDamping},
-            {"sampleRate", s.sampleRate},
-            {"trialSeconds", s.trialSeconds},
-            {"rampSeconds", s.rampSeconds},
-            {"trialEnd", trialEndName(s.trialEnd)},
-            {"betas", s.betas},
-            {"forces", s.forces},
-            {s.kind == ScanKind::Guettler ? "accelerations" : "bowSpeeds", s.second}};
+    json j = {{"format", kFormat},
+              {"kind", kindName(s.kind)},
+              {"preset", m.preset},
+              {"friction", m.friction},
+              {"string", stringJson(m.string)},
+              {"body", m.body},
+              {"contact", contactJson(m.contact)},
+              {"torsion", m.torsion},
+              {"bendingStiffness", m.bendingStiffness},
+              {"fingerDamping", m.fingerDamping},
+              {"sampleRate", s.sampleRate},
+              {"trialSeconds", s.trialSeconds},
+              {"rampSeconds", s.rampSeconds},
+              {"trialEnd", trialEndName(s.trialEnd)},
+              {"betas", s.betas},
+              {"forces", s.forces},
+              {s.kind == ScanKind::Guettler ? "accelerations" : "bowSpeeds", s.second}};
+    // Only when not the default, so that specs written before the option read back byte-identical.
+    if (s.classification != Classification::State)
+        j["classification"] = classificationName(s.classification);
+    return j;
 }
 
 ScanSpec specFromJson(const json& j, const std::string& file)
@@ -209,6 +213,14 @@ ScanSpec specFromJson(const json& j, const std::string& file)
     s.trialSeconds = r.get<double>("trialSeconds");
     s.rampSeconds = r.get<double>("rampSeconds");
     s.trialEnd = readTrialEnd(r, j, file);
+    if (r.has("classification"))
+    {
+        const auto c = r.get<std::string>("classification");
+        if (c != "state" && c != "bridge-force")
+            throw config::ConfigError(file, "classification", "\"state\" or \"bridge-force\"",
+                                      j.at("classification").dump());
+        s.classification = c == "bridge-force" ? Classification::BridgeForce : Classification::State;
+    }
     s.betas = r.get<std::vector<double>>("betas");
     s.forces = r.get<std::vector<double>>("forces");
     s.second = r.get<std::vector<double>>(s.kind == ScanKind::Guettler ? "accelerations" : "bowSpeeds");
