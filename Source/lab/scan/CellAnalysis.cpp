@@ -48,53 +48,48 @@ double transientPeriod(const lab::RegimeAnalysis& steady, double nominal)
         std::abs(steady.measuredPeriod / nominal - 1.0) < lab::regime_thresholds::kPeriodTolerance;
     return helmholtzType && steady.slipsPerCycle == 1 && near ? steady.measuredPeriod : nominal;
 }
-// Reference 7.3 on the flyback episodes, judged over the first 2 x cap periods after the first slip: the
-// Helmholtz run must start within the cap and last to the end of that window. The bow keeps accelerating
-// (Guettler) and F_min grows with the bow speed, so "lasting to the end of the trial" would make the
-// transient depend on the trial's length; this window does not, as long as the trial covers it. For the same
-// reason the period it is counted in is measured over the window's second half, not at the trial's end,
-// where a faster bow flattens the string differently (an early-ended trial would count in another period).
-void addTransient(const std::vector<physics::VoiceSample>& samples, const TrialContext& c, CellResult& r)
+// Reference 7.3 on the slips (flyback episodes, or onsets found in the bridge force), judged over the first
+// 2 x cap periods after the first slip: the Helmholtz run must start within the cap and last to the end of
+// that window. The bow keeps accelerating (Guettler) and F_min grows with the bow speed, so "lasting to the
+// end of the trial" would make the transient depend on the trial's length; this window does not, as long as
+// the trial covers it. For the same reason the period it is counted in is measured over the window's second
+// half (by `classifyLate`), not at the trial's end, where a faster bow flattens the string differently.
+template <typename Slips, typename OnsetOf, typename ClassifyLate>
+void addTransientInWindow(Slips slips, OnsetOf onsetOf, std::size_t samples, const TrialContext& c,
+                          ClassifyLate classifyLate, CellResult& r)
 {
-    const double nominal = c.periodSamples;
-    auto episodes = lab::fullFlybacksOnly(lab::slipEpisodesFromVoice(samples), c.cell.beta, kFlybackShare);
-    if (episodes.empty())
+    if (slips.empty())
         return;
-    const double window = static_cast<double>(episodes.front().onset) + 2.0 * kTransientCapPeriods * nominal;
-    const auto end =
-        static_cast<std::size_t>(std::min(static_cast<double>(samples.size()), std::ceil(window)));
-    std::erase_if(episodes, [end](const lab::SlipEpisode& e) { return e.onset >= end; });
+    const double nominal = c.periodSamples;
+    const double window = static_cast<double>(onsetOf(slips.front())) + 2.0 * kTransientCapPeriods * nominal;
+    const auto end = static_cast<std::size_t>(std::min(static_cast<double>(samples), std::ceil(window)));
+    std::erase_if(slips, [&](const auto& s) { return onsetOf(s) >= end; });
     const auto half = static_cast<std::size_t>(std::round(kTransientCapPeriods * nominal));
-    const auto late = lab::classifyFromVoice(samples, nominal, {end - std::min(end, half), end});
+    const lab::RegimeAnalysis late = classifyLate(lab::AnalysisWindow{end - std::min(end, half), end});
     lab::TransientOptions t;
     t.capPeriods = kTransientCapPeriods;
     t.windowEnd = end;
-    const auto transient = lab::measureTransient(episodes, transientPeriod(late, nominal), t);
+    const auto transient = lab::measureTransient(slips, transientPeriod(late, nominal), t);
     // Fewer than cap periods of trial after the first slip: seed 001's "x" pixel, not a result.
     if (!transient.insufficientData)
         r.transientPeriods = transient.periods;
     r.failure = transient.failure;
 }
 
-// The bridge-force variant of addTransient: onsets found in the force, the window from the first of them.
+void addTransient(const std::vector<physics::VoiceSample>& samples, const TrialContext& c, CellResult& r)
+{
+    addTransientInWindow(
+        lab::fullFlybacksOnly(lab::slipEpisodesFromVoice(samples), c.cell.beta, kFlybackShare),
+        [](const lab::SlipEpisode& e) { return e.onset; }, samples.size(), c,
+        [&](lab::AnalysisWindow w) { return lab::classifyFromVoice(samples, c.periodSamples, w); }, r);
+}
+
+// The bridge-force variant: onsets found in the force, as a measurement's are.
 void addTransientFromForce(const std::vector<double>& force, const TrialContext& c, CellResult& r)
 {
-    const double nominal = c.periodSamples;
-    auto onsets = lab::slipOnsetsFromBridgeForce(force, nominal);
-    if (onsets.empty())
-        return;
-    const double window = static_cast<double>(onsets.front()) + 2.0 * kTransientCapPeriods * nominal;
-    const auto end = static_cast<std::size_t>(std::min(static_cast<double>(force.size()), std::ceil(window)));
-    std::erase_if(onsets, [end](std::size_t o) { return o >= end; });
-    const auto half = static_cast<std::size_t>(std::round(kTransientCapPeriods * nominal));
-    const auto late = lab::classifyFromBridgeForce(force, nominal, {end - std::min(end, half), end});
-    lab::TransientOptions t;
-    t.capPeriods = kTransientCapPeriods;
-    t.windowEnd = end;
-    const auto transient = lab::measureTransient(onsets, transientPeriod(late, nominal), t);
-    if (!transient.insufficientData)
-        r.transientPeriods = transient.periods;
-    r.failure = transient.failure;
+    addTransientInWindow(
+        lab::slipOnsetsFromBridgeForce(force, c.periodSamples), [](std::size_t o) { return o; }, force.size(),
+        c, [&](lab::AnalysisWindow w) { return lab::classifyFromBridgeForce(force, c.periodSamples, w); }, r);
 }
 } // namespace
 
