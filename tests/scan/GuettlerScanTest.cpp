@@ -114,8 +114,8 @@ TEST(GuettlerScanWholeTrials, MostClassicalHelmholtzCellsTakeLongerThanTheCap)
 // 0.15 P refractory time, the same reference-7.3 transient rule, window from the first onset). A second
 // method: for the plastic law it must agree with the state's reached-or-not in most cells (measured: 359 of
 // 400). Shares measured with it at beta 0.0899: plastic 17.0 %, classical 1.5 %, reconstructed 0.0 % (the
-// reconstructed curve's partial slips, ~500 a second, read as extra slips in the force), so the seed's ranking
-// does not hold under this classification: plastic > classical > reconstructed.
+// reconstructed curve's partial slips, ~500 a second, read as extra slips in the force), so the seed's
+// ranking does not hold under this classification: plastic > classical > reconstructed.
 TEST_F(GuettlerScan, BridgeForceClassificationAgreesWithTheStateForThePlasticLaw)
 {
     ScanSpec spec = spec_;

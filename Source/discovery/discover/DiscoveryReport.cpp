@@ -134,12 +134,13 @@ nlohmann::json discoveryMaps(const Discovery& d, const Dataset& dataset)
         if (d.gapBefore.gap[f] > kMappedGap)
             disagreeing.push_back(featureName(f));
     }
-    return {{"motionAxis", d.grid.kind == ScanKind::Schelleng ? "bow speed (m/s)" : "bow acceleration (m/s^2)"},
-            {"changed", changed},
-            {"disagreeing", disagreeing},
-            {"units", units},
-            {"adoptedEffects", d.stepGaps.size()},
-            {"trials", trials}};
+    return {
+        {"motionAxis", d.grid.kind == ScanKind::Schelleng ? "bow speed (m/s)" : "bow acceleration (m/s^2)"},
+        {"changed", changed},
+        {"disagreeing", disagreeing},
+        {"units", units},
+        {"adoptedEffects", d.stepGaps.size()},
+        {"trials", trials}};
 }
 
 std::string discoveryMarkdown(const Discovery& d, const Dataset& dataset,

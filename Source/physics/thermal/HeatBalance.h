@@ -7,9 +7,9 @@
 // function (seed 000: "conduction into the two neighbouring solids"), each solid with its own material:
 //  * the stationary side (string, wedge) always;
 //  * the moving side (rod, bow hair) the same way while the contact sticks; sliding replaces its surface
-//  patch,
-//    which washes its memory out over ~one contact width (Washout.h). Its fast-sliding limit is the exact
-//    high-Peclet conductance of a disc, 0.888 pi a^2 e sqrt(|dv| / a) (the old balance's quasi-steady term).
+//    patch, which washes its memory out over ~one contact width (Washout.h). Its fast-sliding limit is the
+//    exact high-Peclet conductance of a disc, 0.888 pi a^2 e sqrt(|dv| / a); the old balance used the
+//    quasi-steady pi a^2 e sqrt(3 |dv| / (8 a)) instead, 31 % lower, and only while sliding.
 // Time marching: implicit (backward Euler) layer, exact-in-time SOE histories (eq. 2.9); stable at any step.
 #include "ConductingSide.h"
 #include "ContactParameters.h"
