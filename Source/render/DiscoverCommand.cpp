@@ -44,8 +44,20 @@ std::vector<std::string> makeFigures(const fs::path& reportDir, std::ostream& er
     if (const char* env = std::getenv("ROSIN_DISCOVER_FIGURE_SCRIPT"))
         script = env;
     if (script.empty() || !fs::exists(script))
+    {
+        err << "warning: the report has no figures: the figure script "
+            << (script.empty() ? std::string("(none built in)") : script)
+            << " is missing (ROSIN_DISCOVER_FIGURE_SCRIPT names another)\n";
         return {};
-    const std::string python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+    }
+    const std::string& python = scan::figurePython();
+    if (python.empty())
+    {
+        err << "warning: the report has no figures: no Python with matplotlib and numpy (tried "
+            << scan::figurePythonCandidates()
+            << "; Debian: apt-get install python3-matplotlib, or set ROSIN_PYTHON)\n";
+        return {};
+    }
     // An argument vector, no shell: a report folder named with quotes or $(...) is only a folder name.
     if (scan::runProgram({python, script, reportDir.string()}, true) != 0)
     {

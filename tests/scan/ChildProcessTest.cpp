@@ -44,3 +44,14 @@ TEST(ChildProcess, ProgramsAreFoundOnPathOrByPath)
     EXPECT_FALSE(programAvailable("no-such-program-rosin-test"));
     EXPECT_FALSE(programAvailable("/no/such/program"));
 }
+
+TEST(ChildProcess, FiguresUseAPythonThatHasMatplotlib)
+{
+    // .ci/install-deps installs Debian's python3-matplotlib, so one of the candidates has it here; whichever
+    // python3 comes first on PATH (this machine's is a pyenv build without it) does not matter.
+    EXPECT_NE(figurePythonCandidates().find("/usr/bin/python3"), std::string::npos);
+    const std::string& python = figurePython();
+    ASSERT_FALSE(python.empty()) << "tried " << figurePythonCandidates();
+    EXPECT_EQ(runProgram({python, "-c", "import matplotlib, numpy"}, true), 0);
+    EXPECT_EQ(&figurePython(), &python); // looked up once
+}

@@ -59,4 +59,37 @@ bool programAvailable(const std::string& program)
     return false;
 }
 
+namespace
+{
+std::vector<std::string> pythonCandidates()
+{
+    std::vector<std::string> c;
+    if (const char* chosen = std::getenv("ROSIN_PYTHON"); chosen != nullptr && *chosen != '\0')
+        c.emplace_back(chosen);
+    c.emplace_back("/usr/bin/python3");
+    c.emplace_back("python3");
+    return c;
+}
+} // namespace
+
+const std::string& figurePython()
+{
+    static const std::string found = []
+    {
+        for (const auto& python : pythonCandidates())
+            if (programAvailable(python) && runProgram({python, "-c", "import matplotlib, numpy"}, true) == 0)
+                return python;
+        return std::string();
+    }();
+    return found;
+}
+
+std::string figurePythonCandidates()
+{
+    std::string text;
+    for (const auto& python : pythonCandidates())
+        text += (text.empty() ? "" : ", ") + python;
+    return text;
+}
+
 } // namespace rosin::scan

@@ -15,4 +15,11 @@ int runProgram(const std::vector<std::string>& argv, bool quiet = false);
 /// True if `program` names an executable file, directly or on PATH.
 bool programAvailable(const std::string& program);
 
+/// The Python that draws Rosin's figures: the first of $ROSIN_PYTHON, /usr/bin/python3 (where
+/// .ci/install-deps puts Debian's matplotlib) and python3 on PATH that imports matplotlib and numpy. Empty if
+/// none does. Looked up once per process (it starts each candidate).
+const std::string& figurePython();
+/// The candidates figurePython() tries, in order, for messages.
+std::string figurePythonCandidates();
+
 } // namespace rosin::scan

@@ -28,14 +28,16 @@ bool runFigureScript(const std::vector<std::string>& arguments, std::ostream& er
             << (script.empty() ? "(none built in)" : script) << " is missing" << consequence;
         return false;
     }
-    if (!programAvailable("python3"))
+    const std::string& python = figurePython();
+    if (python.empty())
     {
-        err << "warning: figures not drawn: python3 is not installed (with matplotlib and numpy)"
-            << consequence;
+        err << "warning: figures not drawn: no Python with matplotlib and numpy (tried "
+            << figurePythonCandidates()
+            << "; Debian: apt-get install python3-matplotlib, or set ROSIN_PYTHON)" << consequence;
         return false;
     }
-    std::vector<std::string> argv{"python3", script};
-    std::string shown = "python3 " + script;
+    std::vector<std::string> argv{python, script};
+    std::string shown = python + " " + script;
     for (const auto& a : arguments)
     {
         argv.push_back(a);
