@@ -22,9 +22,9 @@ lab::AnalysisWindow steadyWindow(std::size_t n, const TrialContext& c)
     return {n - samples, n};
 }
 
-void addFirstSlip(const std::vector<physics::VoiceSample>& samples, const TrialContext& c, CellResult& r)
+void addFirstSlip(const lab::ForceAndState& trace, const TrialContext& c, CellResult& r)
 {
-    const auto [force, sticking] = lab::forceAndState(samples);
+    const auto& [force, sticking] = trace;
     lab::FirstSlipOptions o;
     o.sampleRate = c.sampleRate;
     o.beta = c.cell.beta;
@@ -100,13 +100,14 @@ CellResult analyseTrial(const std::vector<physics::VoiceSample>& samples, const 
     r.beta = c.cell.beta;
     r.bowForce = c.cell.force;
     r.second = c.cell.second;
-    addFirstSlip(samples, c, r);
+    const lab::ForceAndState trace =
+        lab::forceAndState(samples); // once: the first slip and the force analyses
+    addFirstSlip(trace, c, r);
 
     const auto window = steadyWindow(samples.size(), c);
     lab::RegimeAnalysis steady;
     if (c.classification == Classification::BridgeForce)
-        steady =
-            lab::classifyFromBridgeForce(lab::forceAndState(samples).bridgeForce, c.periodSamples, window);
+        steady = lab::classifyFromBridgeForce(trace.bridgeForce, c.periodSamples, window);
     else
         steady = lab::classifyFromVoice(samples, c.periodSamples, window);
     r.regime = steady.regime;
@@ -118,7 +119,7 @@ CellResult analyseTrial(const std::vector<physics::VoiceSample>& samples, const 
     if (c.kind == ScanKind::Schelleng)
         addTransient(samples, c, r); // a Schelleng row's transient is informative only; kept from the state
     else if (c.classification == Classification::BridgeForce)
-        addTransientFromForce(lab::forceAndState(samples).bridgeForce, c, r);
+        addTransientFromForce(trace.bridgeForce, c, r);
     else
         addTransient(samples, c, r);
     return r;
