@@ -22,6 +22,14 @@ bool passesSensorHighPass(const Channel& channel);
 /// First-order high-pass of cutoff `cutoffHz` (> 0) in place, starting from rest.
 void firstOrderHighPass(std::vector<double>& signal, double cutoffHz, double sampleRate);
 
+/// Second-order Butterworth low-pass of corner `cornerHz` (< sampleRate / 2) in place, from rest.
+void butterworthLowPass(std::vector<double>& signal, double cornerHz, double sampleRate);
+
+/// What a dataset does not state about its force gauges (rosin discover calibrates it, NuisanceParameters.h):
+/// the force channels x `gain`, then the low-pass (lowpassHz 0: none).
+void applyGaugeCalibration(const std::vector<Channel>& layout, std::vector<std::vector<double>>& channels,
+                           double gain, double lowpassHz, double sampleRate);
+
 /// The sensor's response: the high-pass on the force channels, when sensor.highpassHz is given and > 0.
 /// `channels[c]` holds the samples of dataset channel `layout[c]`.
 void applySensorResponse(const std::vector<Channel>& layout, std::vector<std::vector<double>>& channels,

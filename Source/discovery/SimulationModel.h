@@ -6,6 +6,7 @@
 // simulate exactly the same model for the same effects.
 #include <memory>
 
+#include "NuisanceParameters.h"
 #include "config/Preset.h"
 #include "physics/friction/FrictionEffects.h"
 #include "physics/friction/FrictionLaw.h"
@@ -19,6 +20,9 @@ struct SimulationModel
     config::Preset preset;                    ///< default: the galluzzo-rig (cello D3, cello body, plastic)
     physics::FrictionEffects frictionEffects; ///< junction growth, sticking creep (off by default)
     double lossScale = 1.0;                   ///< VoiceConfig::lossScale: string losses x this
+    /// The rig's and the chain's uncertain numbers (rosin discover's calibration); nominal by default. The
+    /// sensor's two act only where discover simulates the measurement chain.
+    NuisanceValues nuisance;
 };
 
 /// The voice's configuration: the preset's string, body and model switches (as rosin scan builds them) with

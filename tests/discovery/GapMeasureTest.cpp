@@ -1,11 +1,12 @@
-// The gap's arithmetic: z is clipped at 3 like a one-sided feature, the paired test's per-trial shares add
-// up to the fitted objective, the chi-square test of a gap meets the table's quantile, and a model's
-// sensitivity to its settings marks features that flip as not comparable; a category's scatter is the
-// rate at which the measurement disagrees with itself.
+// The gap's arithmetic: the Student-t loss and its null mean, a one-sided feature counts as 3 sigma, the
+// paired test's per-trial shares add up to the fitted objective, the chi-square test of a gap meets the
+// table's quantile, and a model's sensitivity to its settings marks features that flip as not comparable; a
+// category's scatter is the rate at which the measurement disagrees with itself.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "discovery/discover/GapMeasure.h"
 #include "discovery/discover/ModelSensitivity.h"
@@ -30,10 +31,10 @@ FeatureScatter unitScatter(std::size_t trials)
 }
 } // namespace
 
-TEST(GapMeasure, DifferencesBeyondThreeSigmaCountAsAQualitativeDisagreement)
+TEST(GapMeasure, AFeatureSeenOnOneSideCountsAsThreeSigma)
 {
-    EXPECT_DOUBLE_EQ(*normalisedDifference(kJump, 10.0, 0.0, 1.0), kMissingZ);
-    EXPECT_DOUBLE_EQ(*normalisedDifference(kJump, 0.0, 10.0, 1.0), -kMissingZ);
+    EXPECT_DOUBLE_EQ(*normalisedDifference(kJump, 10.0, 0.0, 1.0), 10.0); // no clip: the loss is robust
+    EXPECT_DOUBLE_EQ(*normalisedDifference(kJump, 0.0, 10.0, 1.0), -10.0);
     EXPECT_DOUBLE_EQ(*normalisedDifference(kJump, 1.5, 0.5, 0.5), 2.0);
     EXPECT_DOUBLE_EQ(*normalisedDifference(kJump, 1.0, std::nullopt, 1.0), kMissingZ);
     // Helmholtz-motion features are compared only where both sides show them.
@@ -104,7 +105,43 @@ TEST(GapMeasure, TrialSharesAddUpToTheObjective)
         sum += x;
     EXPECT_NEAR(sum, g.objective, 1e-12);
     EXPECT_NEAR(g.meanSquare[kHarmonicTilt], 2.25, 1e-12);
-    EXPECT_NEAR(shares[3] - shares[1], 2.25 / 4 / 2 + (0.09 - 0.01) / 12 / 2, 1e-12);
+    EXPECT_NEAR(shares[3] - shares[1], robustLoss(1.5) / 4 / 2 + (robustLoss(0.3) - robustLoss(0.1)) / 12 / 2,
+                1e-12);
+}
+
+// The null mean of the loss by a second method (Monte Carlo, 200000 normal draws: standard error 0.002), and
+// a right model's gap near 0 while a model 2 sigma off everywhere is clearly not.
+TEST(GapMeasure, StudentLossNullMeanAndGapOfARightModel)
+{
+    std::mt19937_64 random(17);
+    std::normal_distribution<double> normal;
+    double sum = 0.0;
+    constexpr int draws = 200000;
+    for (int i = 0; i < draws; ++i)
+        sum += robustLoss(normal(random));
+    EXPECT_NEAR(nullLoss(), sum / draws, 0.01);
+    std::vector<TrialFeatures> measured, right, off;
+    std::vector<std::size_t> trials;
+    for (std::size_t t = 0; t < 400; ++t)
+    {
+        const double z = normal(random);
+        measured.push_back(withFeature(kJump, z));
+        right.push_back(withFeature(kJump, 0.0));
+        off.push_back(withFeature(kJump, -2.0));
+        trials.push_back(t);
+    }
+    const auto scatter = unitScatter(400);
+    EXPECT_LT(measureGap(trials, measured, right, scatter).gap[kJump], 0.35);
+    EXPECT_GT(measureGap(trials, measured, off, scatter).gap[kJump], 1.2); // 1.43 expected
+}
+
+// What the clip it replaces could not do: shrinking a 6-sigma misfit to 3 sigma is an improvement, and one
+// trial 20 sigma off weighs like fewer than eight 2-sigma trials, not like a hundred.
+TEST(GapMeasure, LargeMisfitsCountButDoNotDominate)
+{
+    EXPECT_GT(robustLoss(6.0) - robustLoss(3.0), 4.0);
+    EXPECT_LT(robustLoss(20.0), 8.0 * robustLoss(2.0)); // z^2 would weigh it as 100 of them
+    EXPECT_NEAR(robustLoss(0.1), 0.01, 1e-4);           // ~z^2 for small z
 }
 
 TEST(GapMeasure, ChiSquareTestMeetsTheTableQuantile)

@@ -39,7 +39,7 @@ def synthetic_maps(adopted, disagreeing, changed):
             values = {"jump": 0.1 * i + 0.01 * j, "staticFriction": 1.0 + 0.1 * j}
             trials.append({"id": f"t{i}{j}", "beta": 0.0899, "force": force, "motion": motion,
                            "measured": values, "baseline": {k: v * 0.5 for k, v in values.items()},
-                           "final": values})
+                           "calibrated": {k: v * 0.8 for k, v in values.items()}, "final": values})
     return {"motionAxis": "bow acceleration (m/s^2)", "changed": changed, "disagreeing": disagreeing,
             "units": {"jump": "", "staticFriction": "", "firstSlipTime": "s"}, "adoptedEffects": adopted,
             "trials": trials}
@@ -51,7 +51,8 @@ class PlotDiscoveryTest(unittest.TestCase):
         self.assertEqual(plot_discovery.mapped_features(maps), ["jump"])
         fig = plot_discovery.draw(maps, "jump", 0.0899)
         panels = [ax for ax in fig.axes if ax.get_title()]
-        self.assertEqual([ax.get_title() for ax in panels], ["measured", "baseline model"])
+        self.assertEqual([ax.get_title() for ax in panels],
+                         ["measured", "baseline model", "baseline, calibrated"])
         for ax in panels:
             self.assertEqual(ax.get_xlabel(), "bow acceleration (m/s^2)")
         self.assertEqual(panels[0].get_ylabel(), "bow force (N)")
@@ -63,7 +64,7 @@ class PlotDiscoveryTest(unittest.TestCase):
         maps = synthetic_maps(1, ["jump"], ["staticFriction", "jump"])
         self.assertEqual(plot_discovery.mapped_features(maps), ["jump", "staticFriction"])
         fig = plot_discovery.draw(maps, "staticFriction", 0.0899)
-        self.assertIn("baseline + adopted effect(s)", [ax.get_title() for ax in fig.axes])
+        self.assertIn("calibrated + adopted effect(s)", [ax.get_title() for ax in fig.axes])
         plt.close(fig)
 
     def test_the_script_writes_one_png_per_feature_and_beta(self):

@@ -47,14 +47,22 @@ Discovery runDiscovery(const Dataset& dataset, std::vector<TrialFeatures> measur
     in.threads = settings.threads;
     in.seed = settings.seed;
     in.log = settings.log;
-    d.search = searchEffects(in, base);
+    d.calibration = calibrate(in, base);
+    SimulationModel calibrated = base;
+    calibrated.nuisance = d.calibration.values;
+    d.calibrated = simulateFeatures(calibrated, dataset, d.used, seconds, settings.threads);
+    d.gapCalibrated = measureGap(d.used, d.measured, d.calibrated, d.scatter);
+    if (settings.log)
+        *settings.log << "calibrated baseline: gap " << d.gapCalibrated.overall << "\n" << std::flush;
+    d.search = searchEffects(in, calibrated, base.nuisance, d.calibration.active);
 
-    d.final = d.baseline;
+    d.final = d.calibrated;
     for (const auto& step : d.search.steps)
     {
         d.final = simulateFeatures(step.model, dataset, d.used, seconds, settings.threads);
         d.stepGaps.push_back(measureGap(d.used, d.measured, d.final, d.scatter));
     }
+    d.finalNuisance = d.search.model.nuisance;
     d.gapAfter = measureGap(d.used, d.measured, d.final, d.scatter);
     for (std::size_t f = 0; f < kFeatureCount; ++f)
         d.whereAfter[f] = whereLargest(f, dataset, d.grid, d.used, d.measured, d.final, d.scatter);

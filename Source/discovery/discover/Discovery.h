@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "Calibration.h"
 #include "EffectSearch.h"
 #include "FeatureScatter.h"
 #include "GapMeasure.h"
@@ -34,14 +35,20 @@ struct Discovery
     std::vector<std::size_t> used; ///< dataset indices of the trials used
     std::vector<std::size_t> training, heldOut;
     FeatureScatter scatter;
-    std::vector<TrialFeatures> measured, baseline, final; ///< indexed like dataset.trials
-    GapSummary gapBefore, gapAfter;
+    /// Indexed like dataset.trials: measured; the nominal baseline's; the calibrated baseline's; the final
+    /// model's (calibrated baseline + adopted effects, the calibration refitted with them).
+    std::vector<TrialFeatures> measured, baseline, calibrated, final;
+    CalibrationResult calibration;
+    NuisanceValues finalNuisance; ///< as refitted together with the adopted effects
+    /// Over all used trials: the nominal baseline (gapBefore), calibrated, the final model (gapAfter).
+    GapSummary gapBefore, gapCalibrated, gapAfter;
     std::array<std::string, kFeatureCount> whereBefore, whereAfter;
     SearchResult search;
     std::vector<GapSummary> stepGaps; ///< over all used trials after each adopted effect
     GapSignificance remaining;        ///< of the gap left after the adopted effects (gapAfter)
-    /// "effect-found" (an effect adopted), "unexplained" (none adopted, yet the gap is significant: p <
-    /// kSignificanceLevel) or "no-significant-discrepancy".
+    /// "effect-found" (an effect adopted), "unexplained" (none adopted, yet the calibrated baseline's gap is
+    /// significant: p < kSignificanceLevel) or "no-significant-discrepancy" (the calibration within the
+    /// lab's tolerances explains the data).
     std::string status;
     double seconds = 0.0;
 };

@@ -1,5 +1,6 @@
 #include "DiscoveryReport.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -9,9 +10,10 @@ namespace rosin::discovery
 namespace
 {
 constexpr const char* kGapDefinition =
-    "per feature: sqrt(max(0, mean z^2 - 1)), z = (measured - simulated) / scatter of the measurement "
-    "(+-3 when only one side shows the feature); overall: mean over features present in >= 3 trials; "
-    "0 = agreement within the measurement's scatter";
+    "per feature: sqrt(max(0, mean rho(z) - E[rho])), rho(z) = 4 ln(1 + z^2 / 4) (Student-t, 4 degrees "
+    "of freedom), E[rho] = 0.775 its mean for a right model, z = (measured - simulated) / scatter of the "
+    "measurement (+-3 when only one side shows the feature); overall: mean over features present in >= 3 "
+    "trials; 0 = agreement within the measurement's scatter";
 
 nlohmann::json parameters(const EffectScore& s)
 {
@@ -40,6 +42,31 @@ nlohmann::json tried(const std::vector<EffectScore>& scores)
     return a;
 }
 
+nlohmann::json calibrationJson(const Discovery& d)
+{
+    nlohmann::json parameters = nlohmann::json::array();
+    const auto& ps = nuisanceParameters();
+    for (std::size_t j = 0; j < ps.size(); ++j)
+    {
+        const auto& p = ps[j];
+        const bool active = std::find(d.calibration.active.begin(), d.calibration.active.end(), j) !=
+                            d.calibration.active.end();
+        parameters.push_back({{"name", p.prior.name},
+                              {"meaning", p.prior.meaning},
+                              {"prior", {p.prior.min, p.prior.max}},
+                              {"nominal", p.nominal()},
+                              {"baseline", d.calibration.values.*p.value},
+                              {"final", d.finalNuisance.*p.value},
+                              {"objectiveSwing", d.calibration.swing[j]},
+                              {"refittedWithEffects", active}});
+    }
+    return {{"parameters", parameters},
+            {"trainingObjectiveBefore", d.calibration.objectiveBefore},
+            {"trainingObjectiveAfter", d.calibration.objectiveAfter},
+            {"gapAfterCalibration", d.gapCalibrated.overall},
+            {"evaluations", d.calibration.evaluations}};
+}
+
 std::string number(double v, const char* format = "%.3g")
 {
     char text[64];
@@ -62,6 +89,7 @@ nlohmann::json discoveryJson(const Discovery& d, const Dataset& dataset)
                      {"sampleRate", dataset.sampleRate}};
     j["gapDefinition"] = kGapDefinition;
     j["gapBefore"] = d.gapBefore.overall;
+    j["calibration"] = calibrationJson(d);
     j["features"] = nlohmann::json::array();
     for (std::size_t f = 0; f < kFeatureCount; ++f)
         j["features"].push_back({{"name", featureName(f)},
@@ -70,6 +98,7 @@ nlohmann::json discoveryJson(const Discovery& d, const Dataset& dataset)
                                  {"scatterMethod", d.scatter.method[f]},
                                  {"trials", d.gapBefore.count[f]},
                                  {"gapBefore", d.gapBefore.gap[f]},
+                                 {"gapCalibrated", d.gapCalibrated.gap[f]},
                                  {"gapAfter", d.gapAfter.gap[f]},
                                  {"where", d.whereBefore[f]},
                                  {"whereAfter", d.whereAfter[f]}});
@@ -92,7 +121,7 @@ nlohmann::json discoveryJson(const Discovery& d, const Dataset& dataset)
     j["remainingGap"] = {
         {"pValue", d.remaining.pValue},
         {"feature", d.remaining.feature < kFeatureCount ? featureName(d.remaining.feature) : ""},
-        {"test", "chi-square of sum z^2 per feature, Bonferroni over features"}};
+        {"test", "chi-square of sum min(z^2, 9) per feature, Bonferroni over features"}};
     j["status"] = d.status;
     j["verdict"] = d.status;
     j["split"] = {{"training", d.training.size()}, {"heldOut", d.heldOut.size()}, {"rule", "checkerboard"}};
@@ -118,6 +147,7 @@ nlohmann::json discoveryMaps(const Discovery& d, const Dataset& dataset)
                               {"motion", d.grid.motion.empty() ? 0.0 : d.grid.motion[cell.motion]},
                               {"measured", values(d.measured[t])},
                               {"baseline", values(d.baseline[t])},
+                              {"calibrated", values(d.calibrated[t])},
                               {"final", values(d.final[t])}});
     // Maps are drawn for every feature that disagrees before any effect (whatever the verdict: a failure
     // needs its picture most) and for every feature an adopted effect changed.
@@ -156,8 +186,18 @@ std::string discoveryMarkdown(const Discovery& d, const Dataset& dataset,
          number(dataset.sensor.highpassHz.value_or(0.0)) + " Hz) at " + std::to_string(dataset.sampleRate) +
          " Hz.\n\n";
     m += "## Verdict: " + d.status + "\n\n";
-    m += "Overall gap " + number(d.gapBefore.overall) + " before, " + number(d.gapAfter.overall) +
-         " after (" + std::string(kGapDefinition) + ").\n\n";
+    m += "Overall gap " + number(d.gapBefore.overall) + " before, " + number(d.gapCalibrated.overall) +
+         " after calibration, " + number(d.gapAfter.overall) + " after (" + std::string(kGapDefinition) +
+         ").\n\n";
+    m += "## Calibration\n\nWhat a laboratory knows only to a tolerance, fitted on the training half within "
+         "its prior before any effect was tried (training objective " +
+         number(d.calibration.objectiveBefore) + " -> " + number(d.calibration.objectiveAfter) + ", " +
+         std::to_string(d.calibration.evaluations) +
+         " simulations): " + describeNuisance(d.calibration.values) +
+         ". With the adopted effects: " + describeNuisance(d.finalNuisance) + ".\n\n";
+    if (d.search.steps.empty() && d.status == "no-significant-discrepancy" &&
+        d.gapCalibrated.overall < d.gapBefore.overall)
+        m += "The calibration alone explains the data: what remains is within the measurement's scatter.\n\n";
     if (d.search.steps.empty())
         m += "No effect of the catalog reduced the held-out gap significantly (paired sign-flip test at 1 % "
              "with a Bonferroni correction over the candidates, and a held-out gain of at least 20 %); no "
@@ -173,15 +213,16 @@ std::string discoveryMarkdown(const Discovery& d, const Dataset& dataset,
              ": chi-square test p = " + number(d.remaining.pValue) +
              "): the missing physics is outside the catalog, or several effects act together that no "
              "single one explains alone.\n\n";
-    m += "## What disagrees, and where\n\n| feature | scatter (method) | trials | gap before | gap after | "
-         "largest before |\n|---|---|---|---|---|---|\n";
+    m += "## What disagrees, and where\n\n| feature | scatter (method) | trials | gap before | calibrated | "
+         "gap after | largest before |\n|---|---|---|---|---|---|---|\n";
     for (std::size_t f = 0; f < kFeatureCount; ++f)
         m += std::string("| ") + featureName(f) + " | " +
              (isCategorical(f)
                   ? "mismatch rate " + number(d.scatter.sigma[f]) + " (" + d.scatter.method[f] + ")"
                   : number(d.scatter.sigma[f]) + " " + featureUnit(f) + " (" + d.scatter.method[f] + ")") +
              " | " + std::to_string(d.gapBefore.count[f]) + " | " + number(d.gapBefore.gap[f]) + " | " +
-             number(d.gapAfter.gap[f]) + " | " + d.whereBefore[f] + " |\n";
+             number(d.gapCalibrated.gap[f]) + " | " + number(d.gapAfter.gap[f]) + " | " + d.whereBefore[f] +
+             " |\n";
     m += "\n";
     for (std::size_t k = 0; k < d.search.steps.size(); ++k)
     {

@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
+#include <numeric>
 
+#include "ModelFit.h"
 #include "ModelRuns.h"
 #include "PairedTest.h"
 
@@ -13,159 +14,97 @@ namespace rosin::discovery
 
 namespace
 {
-constexpr int kGridOne = 7, kGridTwo = 5, kGoldenSteps = 5;
+constexpr int kGridOne = 7, kGridTwo = 5, kGoldenSteps = 5, kJointSteps = 3;
+/// An effect is fitted jointly with the calibration only when it alone already lowers the training
+/// objective by this share: one that explains nothing of the training half will not win on the held-out one,
+/// and the joint fit costs as much again.
+constexpr double kJointGate = 0.02;
 
-// Parameter value <-> search coordinate (log where the catalog says so).
-double toCoordinate(const EffectParameter& p, double v)
+// The effect's fit (grid + golden section over its parameters, as before calibration existed), then the
+// active nuisance parameters fitted again with the effect in place and the effect's parameters refined once
+// more: so the effect is compared as baseline + calibration + effect against baseline + calibration.
+ModelFit fitEffect(const SearchInputs& in, const SimulationModel& start, double startObjective,
+                   const std::vector<std::size_t>& active, const Effect& effect)
 {
-    return p.logarithmic ? std::log(v) : v;
+    const auto& nuisance = nuisanceParameters();
+    const std::size_t ne = effect.parameters.size();
+    std::vector<const EffectParameter*> coordinates;
+    std::vector<double> from;
+    for (const auto& p : effect.parameters)
+        coordinates.push_back(&p), from.push_back(p.min);
+    for (std::size_t j : active)
+        coordinates.push_back(&nuisance[j].prior), from.push_back(start.nuisance.*nuisance[j].value);
+    ModelFit fit(
+        in, coordinates,
+        [&](const std::vector<double>& v)
+        {
+            SimulationModel m = start;
+            for (std::size_t k = 0; k < active.size(); ++k)
+                m.nuisance.*nuisance[active[k]].value = v[ne + k];
+            applyEffect(effect, {v.begin(), v.begin() + static_cast<std::ptrdiff_t>(ne)}, m);
+            return m;
+        },
+        from);
+    const int points = ne == 1 ? kGridOne : kGridTwo;
+    std::vector<std::size_t> effectAxes(ne);
+    std::iota(effectAxes.begin(), effectAxes.end(), 0);
+    if (ne > 0)
+        fit.grid(effectAxes, points);
+    auto refineEffect = [&](double share, int steps)
+    {
+        for (std::size_t j = 0; j < ne; ++j)
+            if (effect.parameters[j].choices.empty())
+                fit.golden(j, share * fit.span(j) / (points - 1), steps);
+    };
+    refineEffect(1.0, kGoldenSteps);
+    if (!(fit.bestValue() < (1.0 - kJointGate) * startObjective))
+        return fit;
+    for (std::size_t k = 0; k < active.size(); ++k)
+        fit.golden(ne + k, fit.span(ne + k) / 2.0, kJointSteps);
+    if (!active.empty())
+        refineEffect(0.5, kJointSteps);
+    return fit;
 }
-double fromCoordinate(const EffectParameter& p, double x)
+
+// What a candidate is compared with (the current model: the calibrated baseline with the effects adopted so
+// far) and what it is fitted from (the same structure with the nuisance values the last adopted step had
+// before calibration, nominal at first): an effect is fitted from where the physics is as stated, not from a
+// calibration that may already have bent the nuisance parameters to mimic it; its own joint calibration
+// then starts there too.
+struct CurrentModel
 {
-    return std::clamp(p.logarithmic ? std::exp(x) : x, p.min, p.max);
-}
-
-class Fitter
-{
-  public:
-    Fitter(const SearchInputs& in, const SimulationModel& base, const Effect& effect)
-        : in_(in), base_(base), effect_(effect)
-    {
-    }
-
-    double objective(const std::vector<double>& values)
-    {
-        auto it = memo_.find(values);
-        if (it != memo_.end())
-            return it->second;
-        SimulationModel m = base_;
-        applyEffect(effect_, values, m);
-        const auto sim = simulateFeatures(m, *in_.dataset, in_.training, in_.seconds, in_.threads);
-        const double o = measureGap(in_.training, in_.measured, sim, in_.scatter).objective;
-        ++evaluations;
-        return memo_[values] = o;
-    }
-
-    std::vector<double> fit()
-    {
-        const auto& ps = effect_.parameters;
-        std::vector<std::vector<double>> axes;
-        for (const auto& p : ps)
-        {
-            std::vector<double> axis;
-            if (!p.choices.empty())
-                for (std::size_t c = 0; c < p.choices.size(); ++c)
-                    axis.push_back(static_cast<double>(c));
-            else
-            {
-                const int n = ps.size() == 1 ? kGridOne : kGridTwo;
-                const double a = toCoordinate(p, p.min), b = toCoordinate(p, p.max);
-                for (int k = 0; k < n; ++k)
-                    axis.push_back(fromCoordinate(p, a + (b - a) * k / (n - 1)));
-            }
-            axes.push_back(axis);
-        }
-        std::vector<double> best(ps.size()), point(ps.size());
-        double bestValue = 1e300;
-        std::vector<std::size_t> index(ps.size(), 0);
-        for (;;)
-        {
-            for (std::size_t j = 0; j < ps.size(); ++j)
-                point[j] = axes[j][index[j]];
-            if (const double o = objective(point); o < bestValue)
-            {
-                bestValue = o;
-                best = point;
-            }
-            std::size_t j = 0;
-            while (j < ps.size() && ++index[j] == axes[j].size())
-                index[j++] = 0;
-            if (j == ps.size())
-                break;
-        }
-        for (std::size_t j = 0; j < ps.size(); ++j)
-            if (ps[j].choices.empty())
-                best = golden(best, j, axes[j]);
-        return best;
-    }
-
-    int evaluations = 0;
-
-  private:
-    std::vector<double> golden(std::vector<double> best, std::size_t j, const std::vector<double>& axis)
-    {
-        const auto& p = effect_.parameters[j];
-        const double step = (toCoordinate(p, axis.back()) - toCoordinate(p, axis.front())) /
-                            static_cast<double>(axis.size() - 1);
-        const double centre = toCoordinate(p, best[j]);
-        double a = std::max(toCoordinate(p, p.min), centre - step);
-        double b = std::min(toCoordinate(p, p.max), centre + step);
-        auto at = [&](double x)
-        {
-            std::vector<double> v = best;
-            v[j] = fromCoordinate(p, x);
-            return objective(v);
-        };
-        const double r = 0.5 * (std::sqrt(5.0) - 1.0);
-        double c = b - r * (b - a), d = a + r * (b - a);
-        double fc = at(c), fd = at(d);
-        for (int k = 0; k < kGoldenSteps - 2; ++k)
-        {
-            if (fc < fd)
-            {
-                b = d;
-                d = c;
-                fd = fc;
-                c = b - r * (b - a);
-                fc = at(c);
-            }
-            else
-            {
-                a = c;
-                c = d;
-                fc = fd;
-                d = a + r * (b - a);
-                fd = at(d);
-            }
-        }
-        const double bestSoFar = objective(best);
-        const double x = fc < fd ? c : d;
-        if (std::min(fc, fd) < bestSoFar)
-            best[j] = fromCoordinate(p, x);
-        return best;
-    }
-
-    const SearchInputs& in_;
-    const SimulationModel& base_;
-    const Effect& effect_;
-    std::map<std::vector<double>, double> memo_;
+    const SimulationModel& model;
+    const std::vector<TrialFeatures>& heldOut;
+    const SimulationModel& start;
+    double startObjective; ///< of `start` on the training trials
 };
 
-// Fitted values are reported (and adopted) to 3 significant digits: the fit is not finer than that.
-double roundToThreeDigits(const EffectParameter& p, double v)
-{
-    if (!p.choices.empty() || v == 0.0)
-        return v;
-    const double scale = std::pow(10.0, 2 - static_cast<int>(std::floor(std::log10(std::abs(v)))));
-    return std::clamp(std::round(v * scale) / scale, p.min, p.max);
-}
-
-EffectScore score(const SearchInputs& in, const SimulationModel& current,
-                  const std::vector<TrialFeatures>& currentHeldOut, const Effect& effect, double alpha)
+EffectScore score(const SearchInputs& in, const CurrentModel& current, const std::vector<std::size_t>& active,
+                  const Effect& effect, double alpha)
 {
     EffectScore s;
     s.effect = &effect;
-    Fitter fitter(in, current, effect);
-    s.values = fitter.fit();
-    for (std::size_t j = 0; j < s.values.size(); ++j)
-        s.values[j] = roundToThreeDigits(effect.parameters[j], s.values[j]);
-    s.evaluations = fitter.evaluations;
-    SimulationModel m = current;
+    const ModelFit fit = fitEffect(in, current.start, current.startObjective, active, effect);
+    const std::size_t ne = effect.parameters.size();
+    s.evaluations = fit.evaluations();
+    SimulationModel m = current.start;
+    const auto& nuisance = nuisanceParameters();
+    for (std::size_t k = 0; k < active.size(); ++k)
+    {
+        // Refitted values are rounded like the effect's; an unchanged one keeps its calibrated value exactly
+        // (a chaotic transient notices even the fourth digit).
+        double& value = m.nuisance.*nuisance[active[k]].value;
+        if (fit.best()[ne + k] != value)
+            value = roundToThreeDigits(nuisance[active[k]].prior, fit.best()[ne + k]);
+    }
+    for (std::size_t j = 0; j < ne; ++j)
+        s.values.push_back(roundToThreeDigits(effect.parameters[j], fit.best()[j]));
     applyEffect(effect, s.values, m);
+    s.nuisance = m.nuisance;
     const auto sim = simulateFeatures(m, *in.dataset, in.heldOut, in.seconds, in.threads);
-    s.heldOutBefore = measureGap(in.heldOut, in.measured, currentHeldOut, in.scatter);
+    s.heldOutBefore = measureGap(in.heldOut, in.measured, current.heldOut, in.scatter);
     s.heldOutAfter = measureGap(in.heldOut, in.measured, sim, in.scatter);
-    const auto e0 = objectiveShares(in.heldOut, in.measured, currentHeldOut, in.scatter);
+    const auto e0 = objectiveShares(in.heldOut, in.measured, current.heldOut, in.scatter);
     const auto e1 = objectiveShares(in.heldOut, in.measured, sim, in.scatter);
     std::vector<double> d;
     double before = 0.0, after = 0.0;
@@ -192,8 +131,10 @@ void splitTrials(const ScanGrid& grid, std::vector<std::size_t>& training, std::
     std::sort(heldOut.begin(), heldOut.end());
 }
 
-SearchResult searchEffects(const SearchInputs& in, const SimulationModel& baseline)
+SearchResult searchEffects(const SearchInputs& in, const SimulationModel& baseline,
+                           const NuisanceValues& uncalibrated, const std::vector<std::size_t>& active)
 {
+    NuisanceValues startNuisance = uncalibrated;
     SearchResult result;
     result.model = baseline;
     std::vector<const Effect*> remaining;
@@ -208,10 +149,17 @@ SearchResult searchEffects(const SearchInputs& in, const SimulationModel& baseli
             measureGap(in.heldOut, in.measured, currentHeldOut, in.scatter).overall <= 0.0)
             break;
         const double alpha = kSignificanceLevel / static_cast<double>(remaining.size());
+        SimulationModel start = result.model;
+        start.nuisance = startNuisance;
+        const double startObjective =
+            measureGap(in.training, in.measured,
+                       simulateFeatures(start, *in.dataset, in.training, in.seconds, in.threads), in.scatter)
+                .objective;
         std::vector<EffectScore> tried;
         for (const Effect* e : remaining)
         {
-            tried.push_back(score(in, result.model, currentHeldOut, *e, alpha));
+            tried.push_back(
+                score(in, {result.model, currentHeldOut, start, startObjective}, active, *e, alpha));
             if (in.log)
             {
                 const auto& s = tried.back();
@@ -237,6 +185,8 @@ SearchResult searchEffects(const SearchInputs& in, const SimulationModel& baseli
         step.tried = tried;
         step.alpha = alpha;
         applyEffect(*best->effect, best->values, result.model);
+        result.model.nuisance = best->nuisance;
+        startNuisance = best->nuisance;
         step.model = result.model;
         remaining.erase(std::find(remaining.begin(), remaining.end(), best->effect));
         result.steps.push_back(std::move(step));

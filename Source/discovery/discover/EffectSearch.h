@@ -1,15 +1,24 @@
 #pragma once
-// The effect search of rosin discover (issue 5): every effect of the EffectCatalog is fitted on a training
-// half of the trials and scored on the other half; the best significant one is adopted, and the search
-// repeats on what remains (at most three effects).
+// The effect search of rosin discover (issue 5, issue 16): every effect of the EffectCatalog is fitted on a
+// training half of the trials, on top of the calibrated baseline (Calibration.h), and scored on the other
+// half; the best significant one is adopted, and the search repeats on what remains (at most three).
 //   Split: a checkerboard over the grid, (beta + force + motion index) even -> training, odd -> held out
 //          (repeats of a cell stay together), so both halves cover the whole scan.
 //   Fit:   a grid over the catalog's fit range (7 points for one parameter, 5 x 5 for two; log-spaced where
 //          the catalog says so; every choice), then a golden-section refinement of each continuous parameter
-//          around the best point (5 evaluations each); the values are rounded to 3 significant digits. The
-//          objective is the training trials' mean z^2 averaged over features (GapSummary::objective). Each
-//          evaluation simulates the training trials.
-//   Score: held-out gain = 1 - sum e_i(with effect) / sum e_i(current model) over the held-out trials,
+//          around the best point (5 evaluations each), from the nuisance values as stated (nominal; after
+//          an adopted effect, those fitted with it): a calibration may already have bent them to mimic the
+//          effect. Then, if the effect lowered the training objective by 2 %, the calibration's active
+//          nuisance parameters are fitted again with the effect in place (3 each, over their prior) and the
+//          effect's parameters refined once more (3 each); values are rounded to 3 significant digits. The
+//          objective is the training trials' Student-t loss averaged over features (GapSummary::objective).
+//          Each evaluation simulates the training trials. Why held-out likelihood and not an information
+//          criterion: an effect's parameters are few but its fit is a search over a nonlinear, partly chaotic
+//          model, where parameter counting (AIC, BIC) says little about how much it can overfit; scoring on
+//          trials the fit never saw penalises exactly the flexibility the effect has, extra parameters
+//          included.
+//   Score: against the current model (the calibrated baseline and the effects adopted so far):
+//          held-out gain = 1 - sum e_i(with effect) / sum e_i(current model) over the held-out trials,
 //          e_i a trial's share of the objective (objectiveShares), so the gain is the held-out objective's
 //          relative fall. Significant when the paired sign-flip test gives p < 0.01 / (effects
 //          tried) (Bonferroni over the candidates) AND the gain is at least 20 %.
@@ -21,9 +30,9 @@
 #include <string>
 #include <vector>
 
-#include "FeatureScatter.h"
+#include "Calibration.h"
 #include "GapMeasure.h"
-#include "TrialFeatures.h"
+#include "SearchInputs.h"
 #include "discovery/Dataset.h"
 #include "discovery/EffectCatalog.h"
 #include "discovery/ScanGrid.h"
@@ -36,19 +45,6 @@ inline constexpr double kSignificanceLevel = 0.01;
 inline constexpr double kMinRelativeGain = 0.2;
 inline constexpr std::size_t kMaxEffects = 3;
 
-struct SearchInputs
-{
-    const Dataset* dataset = nullptr;
-    const ScanGrid* grid = nullptr;
-    std::vector<std::size_t> training, heldOut; ///< dataset trial indices
-    std::vector<TrialFeatures> measured;        ///< indexed like dataset.trials
-    FeatureScatter scatter;
-    std::vector<double> seconds; ///< each trial's length, s
-    unsigned threads = 1;
-    std::uint64_t seed = 0;
-    std::ostream* log = nullptr; ///< progress lines, or nullptr
-};
-
 /// The checkerboard split of the valid trials (grid cells) into training and held-out halves.
 void splitTrials(const ScanGrid& grid, std::vector<std::size_t>& training, std::vector<std::size_t>& heldOut);
 
@@ -56,6 +52,7 @@ struct EffectScore
 {
     const Effect* effect = nullptr;
     std::vector<double> values;
+    NuisanceValues nuisance; ///< the calibration as refitted together with the effect
     int evaluations = 0;
     double heldOutGain = 0.0;
     double pValue = 1.0;
@@ -79,7 +76,11 @@ struct SearchResult
     SimulationModel model; ///< baseline + adopted effects
 };
 
-SearchResult searchEffects(const SearchInputs& inputs, const SimulationModel& baseline);
+/// `baseline` is the calibrated baseline, `uncalibrated` its nuisance values before calibration (where the
+/// first step's effects are fitted from); `active` the nuisance parameters refitted with each effect
+/// (CalibrationResult::active).
+SearchResult searchEffects(const SearchInputs& inputs, const SimulationModel& baseline,
+                           const NuisanceValues& uncalibrated, const std::vector<std::size_t>& active);
 
 /// Why the evidence points to the effect, in words (held-out features that improved, the test).
 std::string describeEvidence(const EffectScore& score, double alpha);

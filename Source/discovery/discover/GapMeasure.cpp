@@ -3,9 +3,34 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 namespace rosin::discovery
 {
+
+double robustLoss(double z) noexcept
+{
+    return kStudentNu * std::log1p(z * z / kStudentNu);
+}
+
+double nullLoss() noexcept
+{
+    // Simpson's rule over z in [-12, 12] (the normal tail beyond carries < 1e-30 of the weight).
+    static const double value = []
+    {
+        constexpr int n = 4800;
+        constexpr double lo = -12.0, h = 24.0 / n;
+        double sum = 0.0;
+        for (int i = 0; i <= n; ++i)
+        {
+            const double z = lo + h * i;
+            const double w = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+            sum += w * robustLoss(z) * std::exp(-0.5 * z * z);
+        }
+        return sum * h / 3.0 / std::sqrt(2.0 * std::numbers::pi);
+    }();
+    return value;
+}
 
 std::optional<double> normalisedDifference(std::size_t feature, const std::optional<double>& measured,
                                            const std::optional<double>& simulated, double sigma)
@@ -15,7 +40,7 @@ std::optional<double> normalisedDifference(std::size_t feature, const std::optio
     if (measured && simulated && isCategorical(feature))
         return *measured == *simulated ? 0.0 : std::min(kMissingZ, 1.0 / std::sqrt(sigma));
     if (measured && simulated)
-        return std::clamp((*measured - *simulated) / sigma, -kMissingZ, kMissingZ);
+        return (*measured - *simulated) / sigma;
     if (measured)
         return kMissingZ;
     if (simulated)
@@ -31,19 +56,23 @@ GapSummary measureGap(const std::vector<std::size_t>& trials, const std::vector<
         for (std::size_t f = 0; f < kFeatureCount; ++f)
             if (auto z = normalisedDifference(f, measured[t][f], simulated[t][f], scatter.trialSigma(t, f)))
             {
-                g.meanSquare[f] += *z * *z;
+                g.meanSquare[f] += std::min(*z * *z, kMissingZ * kMissingZ);
+                g.meanLoss[f] += robustLoss(*z);
                 ++g.count[f];
             }
     std::size_t used = 0;
     for (std::size_t f = 0; f < kFeatureCount; ++f)
     {
         if (g.count[f] > 0)
+        {
             g.meanSquare[f] /= static_cast<double>(g.count[f]);
-        g.gap[f] = std::sqrt(std::max(0.0, g.meanSquare[f] - 1.0));
+            g.meanLoss[f] /= static_cast<double>(g.count[f]);
+        }
+        g.gap[f] = g.count[f] > 0 ? std::sqrt(std::max(0.0, g.meanLoss[f] - nullLoss())) : 0.0;
         if (g.count[f] >= kMinTrialsForGap)
         {
             g.overall += g.gap[f];
-            g.objective += g.meanSquare[f];
+            g.objective += g.meanLoss[f];
             ++used;
         }
     }
@@ -74,7 +103,7 @@ std::vector<double> objectiveShares(const std::vector<std::size_t>& trials,
                 continue;
             const std::size_t t = trials[i];
             if (auto z = normalisedDifference(f, measured[t][f], simulated[t][f], scatter.trialSigma(t, f)))
-                shares[i] += *z * *z / static_cast<double>(g.count[f] * used);
+                shares[i] += robustLoss(*z) / static_cast<double>(g.count[f] * used);
         }
     return shares;
 }
@@ -138,7 +167,7 @@ std::string whereLargest(std::size_t feature, const Dataset& dataset, const Scan
             cellOf[t] = upper(cell.force, grid.forces.size()) |
                         (upper(cell.motion, std::max<std::size_t>(1, grid.motion.size())) << 1) |
                         (upper(cell.beta, grid.betas.size()) << 2);
-    double sumSq[8] = {}, sum[8] = {};
+    double sumLoss[8] = {}, sumSq[8] = {}, sum[8] = {};
     int n[8] = {}, differ[8] = {};
     for (std::size_t t : trials)
     {
@@ -147,6 +176,7 @@ std::string whereLargest(std::size_t feature, const Dataset& dataset, const Scan
         if (auto z = normalisedDifference(feature, measured[t][feature], simulated[t][feature],
                                           scatter.trialSigma(t, feature)))
         {
+            sumLoss[cellOf[t]] += robustLoss(*z);
             sumSq[cellOf[t]] += *z * *z;
             sum[cellOf[t]] += *z;
             differ[cellOf[t]] += *z != 0.0 ? 1 : 0;
@@ -155,7 +185,7 @@ std::string whereLargest(std::size_t feature, const Dataset& dataset, const Scan
     }
     int best = -1;
     for (int r = 0; r < 8; ++r)
-        if (n[r] >= 2 && (best < 0 || sumSq[r] / n[r] > sumSq[best] / n[best]))
+        if (n[r] >= 2 && (best < 0 || sumLoss[r] / n[r] > sumLoss[best] / n[best]))
             best = r;
     if (best < 0)
         return "";

@@ -1,17 +1,21 @@
 #pragma once
 // The gap between measured and simulated features, in units of the measurement's scatter.
 //   z = (measured - simulated) / sigma per trial and feature (FeatureScatter::trialSigma: the measurement's
-//   scatter and the model's sensitivity to the trial's settings), clipped to +-3 (kMissingZ); a feature that
-//   one side shows and the other does not (a slip in one, none in the other) counts as z = +-3 too. Beyond
-//   three sigma a trial disagrees qualitatively, however far: a transient of 14 periods against one of 5 (a
-//   chaotic attack, where 1 % more force changes the outcome) must not outweigh twenty trials that each
-//   disagree by two sigma the same way. Features that describe established Helmholtz motion (pitch, harmonic
-//   tilt) are compared only where both sides show it: whether the motion was reached is the transient's
-//   and the regime's evidence, and counting it again would weigh a chaotic boundary twice. A category (the
-//   regime) compares as same (z = 0) or different (z = 1 / sqrt(q), q its mismatch rate, at most 3).
-//   Per feature: the excess rms  gap = sqrt(max(0, mean(z^2) - 1)) over the trials where either side has
-//   the feature: 0 means the model agrees within the measurement's scatter, 1 that the disagreement is as
-//   large again as the scatter. Overall gap: the mean over features present in at least 3 trials.
+//   scatter and the model's sensitivity to the trial's settings); a feature that one side shows and the
+//   other does not (a slip in one, none in the other) counts as z = +-3 (kMissingZ). Features that describe
+//   established Helmholtz motion (pitch, harmonic tilt) are compared only where both sides show it: whether
+//   the motion was reached is the transient's and the regime's evidence, and counting it again would weigh a
+//   chaotic boundary twice. A category (the regime) compares as same (z = 0) or different (z = 1 / sqrt(q),
+//   q its mismatch rate, at most 3).
+//   Noise model (issue 16 item 2): Student-t with kStudentNu = 4 degrees of freedom, i.e. a trial's loss is
+//   rho(z) = nu ln(1 + z^2 / nu) (its negative log-likelihood up to a constant, scaled so rho ~ z^2 for
+//   small z). It grows without bound, so shrinking a 6-sigma misfit to 1 sigma counts (9.2 -> 0.9), but
+//   only logarithmically, so one chaotic attack 20 sigma off (a transient of 14 periods against 5, where 1 %
+//   more force changes the outcome) weighs like three trials 2 sigma off, not like a hundred. (The loss it
+//   replaces clipped z at 3: a large improvement and a small one scored alike.)
+//   Per feature: gap = sqrt(max(0, mean rho - E[rho])), E[rho] its mean for a right model (z ~ N(0, 1)):
+//   0 means the model agrees within the measurement's scatter, 1 that the excess loss is one sigma^2.
+//   Overall gap: the mean over features present in at least 3 trials.
 //   A trial's error (for the paired test): its share of the objective (objectiveShares).
 // JUCE-free.
 #include <array>
@@ -29,6 +33,12 @@ namespace rosin::discovery
 {
 
 inline constexpr double kMissingZ = 3.0;
+inline constexpr double kStudentNu = 4.0;
+
+/// rho(z) = nu ln(1 + z^2 / nu), the Student-t loss of one normalised difference.
+double robustLoss(double z) noexcept;
+/// E[rho(z)] for z ~ N(0, 1), by quadrature (0.775 for nu = 4): the loss of a model that is right.
+double nullLoss() noexcept;
 inline constexpr std::size_t kMinTrialsForGap = 3;
 
 /// z of one feature of one trial, or nullopt when it is not compared (absent on both sides, a property of
@@ -38,11 +48,13 @@ std::optional<double> normalisedDifference(std::size_t feature, const std::optio
 
 struct GapSummary
 {
-    std::array<double, kFeatureCount> meanSquare{}; ///< mean z^2 per feature (0 when no trial)
+    /// mean min(z^2, 9) per feature (0 when no trial): the chi-square test's statistic (gapSignificance)
+    std::array<double, kFeatureCount> meanSquare{};
+    std::array<double, kFeatureCount> meanLoss{};   ///< mean rho(z) per feature
     std::array<std::size_t, kFeatureCount> count{}; ///< trials with the feature on either side
     std::array<double, kFeatureCount> gap{};        ///< excess rms per feature
     double overall = 0.0;
-    /// Mean over features (with >= kMinTrialsForGap trials) of mean z^2: the quantity a fit minimises.
+    /// Mean over features (with >= kMinTrialsForGap trials) of mean rho(z): the quantity a fit minimises.
     double objective = 0.0;
 };
 
@@ -51,7 +63,7 @@ GapSummary measureGap(const std::vector<std::size_t>& trials, const std::vector<
                       const std::vector<TrialFeatures>& simulated, const FeatureScatter& scatter);
 
 /// Each trial's share of GapSummary::objective over `trials` (same order; they sum to the objective): its
-/// z^2 of every counted feature divided by that feature's trial count and by the number of features. The
+/// rho(z) of every counted feature divided by that feature's trial count and by the number of features. The
 /// paired test compares these, so a feature seen in few trials (the tilt of established Helmholtz motion)
 /// weighs as much in the test as in the gap, not as little as its trials are few.
 std::vector<double> objectiveShares(const std::vector<std::size_t>& trials,
@@ -60,8 +72,9 @@ std::vector<double> objectiveShares(const std::vector<std::size_t>& trials,
                                     const FeatureScatter& scatter);
 
 /// Whether a gap is more than the measurement's scatter explains: per feature with at least
-/// kMinTrialsForGap trials, sum z^2 over its n trials against chi-square with n degrees of freedom (z is
-/// N(0, 1) when the model is right; the clip at 3 only lowers the sum), upper tail by the Wilson-Hilferty
+/// kMinTrialsForGap trials, sum min(z^2, 9) over its n trials against chi-square with n degrees of freedom
+/// (z is N(0, 1) when the model is right; the clip at 3 only lowers the sum, so the test errs towards
+/// "within the scatter" where a few trials are wildly off), upper tail by the Wilson-Hilferty
 /// cube-root approximation; the smallest p, Bonferroni-corrected over the features tested.
 struct GapSignificance
 {
@@ -70,8 +83,8 @@ struct GapSignificance
 };
 GapSignificance gapSignificance(const GapSummary& gap);
 
-/// Where on the grid a feature's z^2 is largest: each axis with more than one value split at its middle,
-/// the region (of 2 to 8) with the largest mean z^2, as text ("force 0.4-1.5 N, acceleration 0.08-1.1
+/// Where on the grid a feature's loss rho(z) is largest: each axis with more than one value split at its
+/// middle, the region (of 2 to 8) with the largest mean rho, as text ("force 0.4-1.5 N, acceleration 0.08-1.1
 /// m/s^2, beta 0.0899: measured above the model by 4.2 sigma on average (9 trials)"); "" if no trial.
 std::string whereLargest(std::size_t feature, const Dataset& dataset, const ScanGrid& grid,
                          const std::vector<std::size_t>& trials, const std::vector<TrialFeatures>& measured,

@@ -94,7 +94,10 @@ std::vector<TrialFeatures> simulateFeatures(const SimulationModel& model, const 
                     layout.push_back(channel);
                     channels.push_back(channelSamples(samples, channel.name));
                 }
-            applySensorResponse(layout, channels, dataset.sensor, static_cast<double>(dataset.sampleRate));
+            const double fs = static_cast<double>(dataset.sampleRate);
+            applySensorResponse(layout, channels, dataset.sensor, fs);
+            applyGaugeCalibration(layout, channels, model.nuisance.sensorGain,
+                                  sensorLowpassHz(model.nuisance, fs), fs);
             return computeTrialFeatures(
                 *recorded(layout, channels, "bridgeForce"), featureContext(dataset, trial),
                 {recorded(layout, channels, "bowPointVelocity"), recorded(layout, channels, "frictionForce"),

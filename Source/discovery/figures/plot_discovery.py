@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Side-by-side maps for `rosin discover`: measured / baseline (/ baseline + adopted effects, when any was
-adopted) of every feature that disagrees before any effect or that an adopted effect changed, one figure per
+"""Side-by-side maps for `rosin discover`: measured / baseline / baseline + calibration (/ + adopted
+effects, when any was adopted) of every feature that disagrees before any effect or that an adopted effect changed, one figure per
 feature and beta, over the (bow force, acceleration or bow speed) grid. Both axes and the colour scale carry
 their quantity and unit.
 
@@ -46,7 +46,8 @@ def draw(maps, name, beta):
     trials = maps["trials"]
     forces = sorted({t["force"] for t in trials})
     motions = sorted({t["motion"] for t in trials})
-    panels = ["measured", "baseline"] + (["final"] if maps.get("adoptedEffects", 0) > 0 else [])
+    panels = ["measured", "baseline"] + (["calibrated"] if "calibrated" in trials[0] else []) + (
+        ["final"] if maps.get("adoptedEffects", 0) > 0 else [])
     grids = {}
     for key in panels:
         g = np.full((len(forces), len(motions)), np.nan)
@@ -60,7 +61,8 @@ def draw(maps, name, beta):
     lo, hi = np.percentile(finite, 2), np.percentile(finite, 98)
     fig, axes = plt.subplots(1, len(panels), figsize=(4 * len(panels), 4.2), sharey=True,
                              constrained_layout=True)
-    titles = {"measured": "measured", "baseline": "baseline model", "final": "baseline + adopted effect(s)"}
+    titles = {"measured": "measured", "baseline": "baseline model", "calibrated": "baseline, calibrated",
+              "final": "calibrated + adopted effect(s)"}
     mesh = None
     for ax, key in zip(axes, panels):
         mesh = ax.pcolormesh(range(len(motions) + 1), range(len(forces) + 1), grids[key], vmin=lo, vmax=hi,

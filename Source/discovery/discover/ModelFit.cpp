@@ -1,0 +1,121 @@
+#include "ModelFit.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "GapMeasure.h"
+#include "ModelRuns.h"
+
+namespace rosin::discovery
+{
+
+ModelFit::ModelFit(const SearchInputs& inputs, std::vector<const EffectParameter*> coordinates,
+                   ModelBuilder build, const std::vector<double>& start)
+    : in_(inputs), coordinates_(std::move(coordinates)), build_(std::move(build))
+{
+    bestValue_ = 1e300;
+    objective(start);
+}
+
+double ModelFit::objective(const std::vector<double>& values)
+{
+    if (auto it = memo_.find(values); it != memo_.end())
+        return it->second;
+    const auto sim = simulateFeatures(build_(values), *in_.dataset, in_.training, in_.seconds, in_.threads);
+    ++evaluations_;
+    const double o = measureGap(in_.training, in_.measured, sim, in_.scatter).objective;
+    if (o < bestValue_)
+    {
+        bestValue_ = o;
+        best_ = values;
+    }
+    return memo_[values] = o;
+}
+
+// Fitted values are reported (and adopted) to 3 significant digits: the fit is not finer than that.
+double roundToThreeDigits(const EffectParameter& p, double v)
+{
+    if (!p.choices.empty() || v == 0.0)
+        return v;
+    const double scale = std::pow(10.0, 2 - static_cast<int>(std::floor(std::log10(std::abs(v)))));
+    return std::clamp(std::round(v * scale) / scale, p.min, p.max);
+}
+
+double ModelFit::toSearch(std::size_t j, double v) const
+{
+    return coordinates_[j]->logarithmic ? std::log(v) : v;
+}
+
+double ModelFit::fromSearch(std::size_t j, double x) const
+{
+    const auto& p = *coordinates_[j];
+    return std::clamp(p.logarithmic ? std::exp(x) : x, p.min, p.max);
+}
+
+double ModelFit::span(std::size_t j) const
+{
+    return toSearch(j, coordinates_[j]->max) - toSearch(j, coordinates_[j]->min);
+}
+
+void ModelFit::grid(const std::vector<std::size_t>& axes, int points)
+{
+    std::vector<std::vector<double>> values;
+    for (std::size_t j : axes)
+    {
+        const auto& p = *coordinates_[j];
+        std::vector<double> axis;
+        if (!p.choices.empty())
+            for (std::size_t c = 0; c < p.choices.size(); ++c)
+                axis.push_back(static_cast<double>(c));
+        else
+            for (int k = 0; k < points; ++k)
+                axis.push_back(fromSearch(j, toSearch(j, p.min) + span(j) * k / (points - 1)));
+        values.push_back(axis);
+    }
+    const std::vector<double> centre = best_;
+    std::vector<std::size_t> index(axes.size(), 0);
+    for (;;)
+    {
+        std::vector<double> point = centre;
+        for (std::size_t a = 0; a < axes.size(); ++a)
+            point[axes[a]] = values[a][index[a]];
+        objective(point);
+        std::size_t a = 0;
+        while (a < axes.size() && ++index[a] == values[a].size())
+            index[a++] = 0;
+        if (a == axes.size())
+            break;
+    }
+}
+
+void ModelFit::golden(std::size_t j, double halfWidth, int evaluations)
+{
+    const auto& p = *coordinates_[j];
+    const std::vector<double> centre = best_;
+    const double x0 = toSearch(j, centre[j]);
+    double a = std::max(toSearch(j, p.min), x0 - halfWidth), b = std::min(toSearch(j, p.max), x0 + halfWidth);
+    auto at = [&](double x)
+    {
+        std::vector<double> v = centre;
+        v[j] = fromSearch(j, x);
+        return objective(v); // adopts the point if it is the best so far
+    };
+    const double r = 0.5 * (std::sqrt(5.0) - 1.0);
+    double c = b - r * (b - a), d = a + r * (b - a);
+    double fc = at(c), fd = at(d);
+    for (int k = 0; k < evaluations - 2; ++k)
+        if (fc < fd)
+        {
+            b = d, d = c, fd = fc;
+            c = b - r * (b - a);
+            fc = at(c);
+        }
+        else
+        {
+            a = c, c = d, fc = fd;
+            d = a + r * (b - a);
+            fd = at(d);
+        }
+}
+
+} // namespace rosin::discovery

@@ -1,0 +1,61 @@
+#pragma once
+// Fitting numbers of a model to the training trials, shared by the effect fit (EffectSearch) and the
+// calibration of the nuisance parameters (Calibration): the objective (GapSummary::objective over the
+// training trials), memoised so no point is simulated twice; a grid over full ranges; a golden-section
+// refinement of one coordinate around the best point. Coordinates are searched on a log scale where their
+// EffectParameter says so; a choice is searched by the grid only. JUCE-free.
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <vector>
+
+#include "SearchInputs.h"
+#include "discovery/EffectCatalog.h"
+#include "discovery/SimulationModel.h"
+
+namespace rosin::discovery
+{
+
+/// Fitted values are reported (and adopted) to 3 significant digits: no fit here is finer than that. A
+/// choice is returned as it is.
+double roundToThreeDigits(const EffectParameter& parameter, double value);
+
+/// The model at a point: `values` in the order of the fit's coordinates.
+using ModelBuilder = std::function<SimulationModel(const std::vector<double>& values)>;
+
+class ModelFit
+{
+  public:
+    /// `coordinates` give each value's range; `start` is the first best point (evaluated at once).
+    ModelFit(const SearchInputs& inputs, std::vector<const EffectParameter*> coordinates, ModelBuilder build,
+             const std::vector<double>& start);
+
+    /// The training objective at `values` (simulated once per distinct point).
+    double objective(const std::vector<double>& values);
+    /// Every combination of `points` values per axis over the whole range of each coordinate in `axes` (all
+    /// choices of a choice), the others at the best point; keeps the best.
+    void grid(const std::vector<std::size_t>& axes, int points);
+    /// Golden-section search of coordinate j over best +- halfWidth (search scale, within its range) with
+    /// `evaluations` points; adopts the minimum when it beats the best point.
+    void golden(std::size_t j, double halfWidth, int evaluations);
+    /// The width of coordinate j's range on its search scale.
+    double span(std::size_t j) const;
+
+    const std::vector<double>& best() const noexcept { return best_; }
+    double bestValue() const noexcept { return bestValue_; }
+    int evaluations() const noexcept { return evaluations_; }
+
+  private:
+    double toSearch(std::size_t j, double v) const;
+    double fromSearch(std::size_t j, double x) const;
+
+    const SearchInputs& in_;
+    std::vector<const EffectParameter*> coordinates_;
+    ModelBuilder build_;
+    std::vector<double> best_;
+    double bestValue_ = 0.0;
+    int evaluations_ = 0;
+    std::map<std::vector<double>, double> memo_;
+};
+
+} // namespace rosin::discovery

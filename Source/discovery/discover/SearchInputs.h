@@ -1,0 +1,29 @@
+#pragma once
+// What every fit of rosin discover works from: the dataset, its grid, the training / held-out split, the
+// measured features and their scatter. JUCE-free.
+#include <cstdint>
+#include <ostream>
+#include <vector>
+
+#include "FeatureScatter.h"
+#include "TrialFeatures.h"
+#include "discovery/Dataset.h"
+#include "discovery/ScanGrid.h"
+
+namespace rosin::discovery
+{
+
+struct SearchInputs
+{
+    const Dataset* dataset = nullptr;
+    const ScanGrid* grid = nullptr;
+    std::vector<std::size_t> training, heldOut; ///< dataset trial indices
+    std::vector<TrialFeatures> measured;        ///< indexed like dataset.trials
+    FeatureScatter scatter;
+    std::vector<double> seconds; ///< each trial's length, s
+    unsigned threads = 1;
+    std::uint64_t seed = 0;
+    std::ostream* log = nullptr; ///< progress lines, or nullptr
+};
+
+} // namespace rosin::discovery
