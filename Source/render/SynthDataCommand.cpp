@@ -12,11 +12,12 @@
 #include "config/ConfigError.h"
 #include "discovery/DatasetReader.h"
 #include "discovery/DatasetWriter.h"
-#include "render/dataset/TrialSignals.h"
+#include "discovery/independent/IndependentRun.h"
 #include "discovery/synth/SynthRun.h"
 #include "discovery/synth/SynthTruth.h"
 #include "gesture/GestureLimits.h"
 #include "lab/scan/StopSignal.h"
+#include "render/dataset/TrialSignals.h"
 
 namespace rosin::cli
 {
@@ -100,38 +101,46 @@ void describe(const discovery::SynthPlan& plan, const SynthDataCommandLine& c, s
         << " beta(s) x " << s.forces.size() << " forces x " << s.second.size()
         << (guettler ? " accelerations" : " bow speed") << " = " << s.cellCount() << " trials of "
         << gesture::formatNumber(s.trialSeconds) << " s at " << plan.dataset.sampleRate << " Hz, seed "
-        << plan.seed << "\n";
+        << plan.seed << (c.generator == "independent" ? ", independent generator" : "") << "\n";
 }
 
 // Simulates and writes every trial into the partial folder, then dataset.json.
-void writeDataset(discovery::SynthPlan& plan, const OutputPaths& paths, unsigned threads)
+void writeDataset(discovery::SynthPlan& plan, const OutputPaths& paths, unsigned threads,
+                  const std::string& generator)
 {
     plan.dataset.folder = paths.partial.string();
     // The description is checked now (without the noise floor, which the pilot sets), not after the run.
     discovery::parseDatasetDescription(nlohmann::json::parse(discovery::datasetToJson(plan.dataset).dump()),
                                        plan.dataset.descriptionPath(), plan.dataset.folder);
     fs::create_directories(paths.partial);
-    discovery::runSynthData(plan, threads,
-                            [&](std::size_t i, const std::vector<std::vector<double>>& channels)
-                            {
-                                if (scan::stopSignalled())
-                                    throw Stopped{};
-                                discovery::writeTrialSignals(plan.dataset, plan.dataset.trials[i], channels);
-                            });
+    const discovery::MeasuredTrialSink sink =
+        [&](std::size_t i, const std::vector<std::vector<double>>& channels)
+    {
+        if (scan::stopSignalled())
+            throw Stopped{};
+        discovery::writeTrialSignals(plan.dataset, plan.dataset.trials[i], channels);
+    };
+    if (generator == "independent")
+        discovery::runIndependentSynthData(plan, threads, sink);
+    else
+        discovery::runSynthData(plan, threads, sink);
     if (scan::stopSignalled())
         throw Stopped{};
     discovery::writeDatasetDescription(plan.dataset, plan.dataset.folder);
 }
 
 // The truth beside the dataset, then the dataset in place: both or neither.
-void publish(const discovery::SynthPlan& plan, const OutputPaths& paths)
+void publish(const discovery::SynthPlan& plan, const OutputPaths& paths, const std::string& generator)
 {
     fs::path truthPartial;
     if (paths.truth)
     {
         truthPartial = *paths.truth;
         truthPartial += ".tmp";
-        writeText(truthPartial, discovery::truthJson(plan, paths.out.string()).dump(2) + "\n");
+        auto truth = discovery::truthJson(plan, paths.out.string());
+        if (generator == "independent")
+            truth["independent"] = discovery::independentTruth(plan).toJson();
+        writeText(truthPartial, truth.dump(2) + "\n");
     }
     std::error_code ec;
     if (fs::exists(paths.out, ec))
@@ -175,7 +184,7 @@ std::string synthDataHelp()
 {
     return R"(usage: rosin synth-data --effect NAME|none [--effect NAME2 ...] --scan guettler|schelleng
                         [grid options] [--preset NAME] [--sample-rate HZ] [--channels basic|all]
-                        --seed S --out DIR [--truth FILE]
+                        [--generator rosin|independent] --seed S --out DIR [--truth FILE]
 
 Writes a measured-like dataset (format rosin-measurements/1, shared/spec/measurements.md) from Rosin's
 model with physical effects hidden, through a laboratory's measurement chain: a first-order 0.5 Hz sensor
@@ -204,6 +213,13 @@ model and recording:
   --sample-rate HZ         integer 8000..384000 (default 44100)
   --channels basic|all     basic (default): bridgeForce (N) and bowVelocity (m/s), as a laboratory
                            records them; all: also frictionForce (N) and bowPointVelocity (m/s)
+  --generator rosin|independent
+                           rosin (default): Rosin's own stepper, the catalog's effect formulas; independent:
+                           data Rosin's stepper did not make, to test rosin discover on: a waveguide string
+                           (transverse + torsion) with its own finite-difference heat balance, each effect in
+                           its own form (not the catalog's formula), the rig's constants off nominal within a
+                           lab's tolerances and an unstated anti-aliasing low-pass, gain error and start
+                           delay (all drawn from the seed; --truth records them)
 output:
   --seed S                 integer 0..2^64-1; the same seed and options give byte-identical files
   --out DIR                the dataset folder: new or empty; built in DIR.tmp and renamed when complete
@@ -237,8 +253,8 @@ int runSynthData(const std::vector<std::string>& args, std::ostream& out, std::o
     const auto start = std::chrono::steady_clock::now();
     try
     {
-        writeDataset(plan, paths, c.threads);
-        publish(plan, paths);
+        writeDataset(plan, paths, c.threads, c.generator);
+        publish(plan, paths, c.generator);
     }
     catch (...)
     {

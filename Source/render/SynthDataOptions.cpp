@@ -22,8 +22,8 @@ using discovery::Effect;
 using discovery::EffectRequest;
 
 // Options of synth-data itself; the grid ones go to rosin scan's parser unchanged.
-const std::vector<std::string> kOwnOptions = {"--effect", "--scan",  "--preset",  "--seed",
-                                              "--out",    "--truth", "--channels"};
+const std::vector<std::string> kOwnOptions = {"--effect", "--scan",  "--preset",   "--seed",
+                                              "--out",    "--truth", "--channels", "--generator"};
 const std::vector<std::string> kGridOptions = {
     "--beta",     "--grid",        "--force-range", "--acceleration-range", "--bow-speed", "--beta-range",
     "--duration", "--sample-rate", "--threads"};
@@ -208,6 +208,12 @@ SynthDataCommandLine parseSynthDataCommandLine(const std::vector<std::string>& a
         if (*channels != "basic" && *channels != "all")
             bad("--channels", "one of basic, all", *channels);
         s.allChannels = *channels == "all";
+    }
+    if (const auto generator = last(options, "--generator"))
+    {
+        if (*generator != "rosin" && *generator != "independent")
+            bad("--generator", "one of rosin, independent", *generator);
+        c.generator = *generator;
     }
     const auto out = last(options, "--out");
     if (!out)

@@ -19,6 +19,9 @@ struct SynthDataCommandLine
     std::string out;                  ///< the dataset folder
     std::optional<std::string> truth; ///< --truth FILE
     unsigned threads = 0;             ///< 0: every core
+    /// --generator: "rosin" (Rosin's own stepper) or "independent" (discovery/independent: a waveguide
+    /// string with its own heat balance, effect forms, nuisance draws and measurement chain).
+    std::string generator = "rosin";
 };
 
 /// args: everything after "synth-data".
