@@ -21,9 +21,11 @@ WaveguideSegment::WaveguideSegment(double roundTripSamples, const LossLaw& eta, 
     const double f2 = std::min(36.0 * referenceHz, sampleRate / 5.0);
     if (eta)
         loss_ = OnePoleLoss(eta, tau, referenceHz, std::max(f2, 1.5 * referenceHz), sampleRate);
-    d1_ = std::max(1.0, std::floor(0.5 * roundTripSamples));
-    // A segment shorter than the line's minimum (torsion near the bridge at small beta) runs slightly long.
+    // The filters' delay at the reference comes out of the two lines, shared evenly (the dispersion cascade
+    // may take half of the segment). A segment shorter than the line's minimum (torsion near the bridge at
+    // small beta) runs slightly long.
     const double filters = loss_.phaseDelay(referenceHz) + dispersion_.phaseDelay(referenceHz);
+    d1_ = std::max(1.0, std::floor(0.5 * (roundTripSamples - filters)));
     d2_ = std::max(0.0, roundTripSamples - d1_ - filters);
     built_ = d1_ + d2_ + filters;
 }
@@ -35,14 +37,16 @@ WaveguideString::WaveguideString(const WaveguideSettings& s)
 {
     const double c = std::sqrt(s.tension / s.massPerLength);
     const double fs = s.sampleRate;
-    bridge_ = WaveguideSegment(2.0 * s.beta * s.length / c * fs, s.transverseLoss, f0_, fs);
-    // The whole string's dispersion sits in the longer, nut-side segment (the bow point hears it a little
-    // late from the bridge side; the modes' frequencies are those of the loop).
+    // The loop's dispersion cascade, shared between the two sides by length (equal sections), so waves
+    // between bow and bridge disperse too. The loop stays tuned to c/(2L) at the fundamental (stiffness
+    // would raise it by B/2: 0.05 cents).
     const double B = std::pow(std::numbers::pi, 2) * s.bendingStiffness / (s.tension * s.length * s.length);
-    const double loop = 2.0 * s.length / c * fs;
-    // The loop stays tuned to c/(2L) at the fundamental (stiffness would raise it by B/2: 0.05 cents).
+    const DispersionDesign design = designDispersion(2.0 * s.length / c * fs, f0_, B, fs);
+    const int bridgeSections = static_cast<int>(std::lround(s.beta * design.sections));
+    bridge_ = WaveguideSegment(2.0 * s.beta * s.length / c * fs, s.transverseLoss, f0_, fs,
+                               DispersionAllpass(design, bridgeSections, fs));
     nut_ = WaveguideSegment(2.0 * (1.0 - s.beta) * s.length / c * fs, s.transverseLoss, f0_, fs,
-                            DispersionAllpass(loop, f0_, B, fs));
+                            DispersionAllpass(design, design.sections - bridgeSections, fs));
     admittance_ = 1.0 / (2.0 * z0_);
     if (torsion_)
     {

