@@ -15,6 +15,7 @@ void junctionGrowth(SimulationModel& m, const std::vector<double>& v)
 {
     m.frictionEffects.junctionGrowth = v[0];
     m.frictionEffects.junctionGrowthTime = v[1];
+    m.frictionEffects.junctionGrowthSaturates = v[2] == 1.0;
 }
 
 void breakawayJump(SimulationModel& m, const std::vector<double>& v)
@@ -32,10 +33,19 @@ void stickingCreep(SimulationModel& m, const std::vector<double>& v)
     m.frictionEffects.creepResistance = v[0];
 }
 
-// Multiplies, so the effect adds to whatever loss the baseline already has.
+// Multiplies, so the effect adds to whatever loss the baseline already has: every term of the loss law, or
+// only its internal-friction term (frequency-independent) or only its bending term (high partials).
 void extraStringDamping(SimulationModel& m, const std::vector<double>& v)
 {
-    m.lossScale *= v[0];
+    if (v[1] == 1.0)
+    {
+        m.preset.string.lossF *= v[0];
+        m.preset.string.stoppedLossF *= v[0];
+    }
+    else if (v[1] == 2.0)
+        m.preset.string.lossB *= v[0];
+    else
+        m.lossScale *= v[0];
 }
 
 // Adds, for the same reason: the offset is relative to the rig's stated ambient.
@@ -62,6 +72,24 @@ std::vector<Effect> makeCatalog()
                                     .drawMax = 0.010,
                                     .logarithmic = true,
                                     .meaning = "hold time at which ageing sets in"};
+    // Signature families (issue 16 item 4): an effect is named by what it does, not by one formula. Rosin's
+    // own synth-data draws the first form (draw range 0..0), so its datasets stay as they were.
+    const EffectParameter ageing{.name = "ageingForm",
+                                 .min = 0.0,
+                                 .max = 1.0,
+                                 .drawMin = 0.0,
+                                 .drawMax = 0.0,
+                                 .choices = {"logarithmic", "saturating"},
+                                 .meaning =
+                                     "growth without limit, ln(1 + t/tau), or towards one, 1 - exp(-t/tau)"};
+    const EffectParameter lossTerms{.name = "lossTerms",
+                                    .min = 0.0,
+                                    .max = 2.0,
+                                    .drawMin = 0.0,
+                                    .drawMax = 0.0,
+                                    .choices = {"all", "internal", "bending"},
+                                    .meaning = "which terms of the loss law grow: all, the internal friction "
+                                               "(frequency-independent) or the bending term (high partials)"};
     const EffectParameter jumpCurve{.name = "jumpCurve",
                                     .min = 0.0,
                                     .max = 1.0,
@@ -84,7 +112,7 @@ std::vector<Effect> makeCatalog()
                                     .drawMin = 2.0,
                                     .drawMax = 4.0,
                                     .logarithmic = true,
-                                    .meaning = "every transverse mode's loss factor x this"};
+                                    .meaning = "the loss law's terms (lossTerms) x this"};
     const EffectParameter ambientOffset{.name = "ambientOffset",
                                         .unit = "K",
                                         .min = -25.0,
@@ -97,7 +125,7 @@ std::vector<Effect> makeCatalog()
         {"junction-growth",
          "limiting static friction grows with the time spent sticking (contact ageing)",
          "physics reference section 8.2",
-         {growth, onsetTime},
+         {growth, onsetTime, ageing},
          junctionGrowth},
         {"breakaway-jump",
          "abrupt release at the first slip while the rosin is cold (modified thermal law)",
@@ -117,7 +145,7 @@ std::vector<Effect> makeCatalog()
         {"extra-string-damping",
          "string losses higher than the nominal loss law",
          "seed 001 Table 1 (stopped-string bracket), Fig. 12c",
-         {lossScale},
+         {lossScale, lossTerms},
          extraStringDamping},
         {"ambient-temperature",
          "the rosin starts warmer or colder than the rig's stated ambient temperature",

@@ -6,19 +6,22 @@
 //
 //   junction-growth      contact ageing (physics reference section 8.2): the limiting static friction grows
 //                        with the time spent sticking, mu_s(t_h) = mu_s0 (1 + growth ln(1 + t_h / tau_c));
+//                        or saturating, mu_s0 (1 + growth (1 - exp(-t_h / tau_c)));
 //                        physics::JunctionGrowthLaw around the preset's law. Parameters: growth
-//                        (dimensionless, beta_a / mu_s0), onsetTime (tau_c, s).
+//                        (dimensionless, beta_a / mu_s0), onsetTime (tau_c, s), ageingForm (a choice).
 //   breakaway-jump       an abrupt release at the first slip while the rosin is cold: the modified thermal
 //                        law of seed 002 (eq. 6 with the jump curve of eq. 12 bow / eq. 13 rod) replaces the
 //                        preset's law. Parameter: jumpCurve, a choice of "rod" or "bow".
 //   hertz-contact        contact area ~ N^(2/3) (one elastic contact) instead of ~ N (reference section 8.3;
 //                        seed 001 Fig. 11): the preset's contact scaling becomes Hertz. No parameter.
 //   sticking-creep       viscous-like creep during nominal sticking (seed 001 section 5.3): a dashpot in
-//   series
-//                        with the sticking contact, physics::StickingCreepLaw. Parameter: creepResistance
-//                        (eta, N s/m; the pre-slip force is the rigid-sticking one times eta / (2Z + eta)).
+//                        series with the sticking contact, physics::StickingCreepLaw. Parameter:
+//                        creepResistance (eta, N s/m; the pre-slip force is the rigid-sticking one times eta
+//                        / (2Z + eta)).
 //   extra-string-damping string losses above the nominal loss law (as for a finger-stopped string, seed 001
-//                        Table 1 bracket and Fig. 12c): VoiceConfig::lossScale. Parameter: lossScale (x).
+//                        Table 1 bracket and Fig. 12c). Parameters: lossScale (x) and lossTerms, a choice
+//                        of which terms grow: all (VoiceConfig::lossScale), the internal friction eta_F
+//                        only (frequency-independent), or the bending term eta_B only (high partials).
 //   ambient-temperature  the rosin starts warmer or colder than the rig's stated ambient (the thermal laws of
 //                        seeds 000-002 read their calibrated tables at T + offset): Preset::ambientOffset.
 //                        Parameter: ambientOffset (K). A colder rosin keeps its ambient properties until the

@@ -167,7 +167,16 @@ std::string effectCatalogHelp()
         {
             const std::string unit = p.unit.empty() ? "" : " " + p.unit;
             if (!p.choices.empty())
-                text += "      " + p.name + "=rod|bow: " + p.meaning + "; drawn either\n";
+            {
+                std::string choices, drawn;
+                for (std::size_t c = 0; c < p.choices.size(); ++c)
+                {
+                    choices += (c ? "|" : "") + p.choices[c];
+                    if (c >= p.drawMin && c <= p.drawMax)
+                        drawn += (drawn.empty() ? "" : " or ") + p.choices[c];
+                }
+                text += "      " + p.name + "=" + choices + ": " + p.meaning + "; drawn " + drawn + "\n";
+            }
             else
                 text += "      " + p.name + "=" + gesture::formatNumber(p.min) + ".." +
                         gesture::formatNumber(p.max) + unit + ": " + p.meaning + "; drawn " +

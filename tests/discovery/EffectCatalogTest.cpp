@@ -45,11 +45,11 @@ TEST(EffectCatalog, NamesTheSixEffectsOfIssue5InOrder)
 TEST(EffectCatalog, ParametersHaveNamesUnitsAndRanges)
 {
     const std::map<std::string, std::vector<std::string>> expected{
-        {"junction-growth", {"growth", "onsetTime"}},
+        {"junction-growth", {"growth", "onsetTime", "ageingForm"}},
         {"breakaway-jump", {"jumpCurve"}},
         {"hertz-contact", {}},
         {"sticking-creep", {"creepResistance"}},
-        {"extra-string-damping", {"lossScale"}},
+        {"extra-string-damping", {"lossScale", "lossTerms"}},
         {"ambient-temperature", {"ambientOffset"}}};
     std::set<std::string> all;
     for (const auto& e : effectCatalog())
@@ -82,7 +82,7 @@ TEST(EffectCatalog, ParametersHaveNamesUnitsAndRanges)
 
 TEST(EffectCatalog, JunctionGrowthAgesTheVoicesStaticLimit)
 {
-    const SimulationModel model = withEffect("junction-growth", {0.2, 0.005});
+    const SimulationModel model = withEffect("junction-growth", {0.2, 0.005, 0.0});
     EXPECT_DOUBLE_EQ(model.frictionEffects.junctionGrowth, 0.2);
     EXPECT_DOUBLE_EQ(model.frictionEffects.junctionGrowthTime, 0.005);
     auto law = frictionLaw(model);
@@ -141,11 +141,22 @@ TEST(EffectCatalog, StickingCreepPutsADashpotInTheStuckContact)
 
 TEST(EffectCatalog, ExtraStringDampingScalesTheLoss)
 {
-    SimulationModel model = withEffect("extra-string-damping", {3.0});
+    SimulationModel model = withEffect("extra-string-damping", {3.0, 0.0});
     EXPECT_DOUBLE_EQ(voiceConfig(model).lossScale, 3.0);
     EXPECT_DOUBLE_EQ(voiceConfig(SimulationModel{}).lossScale, 1.0);
-    applyEffect(*findEffect("extra-string-damping"), {2.0}, model);
+    applyEffect(*findEffect("extra-string-damping"), {2.0, 0.0}, model);
     EXPECT_DOUBLE_EQ(voiceConfig(model).lossScale, 6.0); // on top of what the model had
+    // One term only: the internal friction (every partial alike) or the bending term (the high ones).
+    const auto nominal = SimulationModel{}.preset.string;
+    const auto internal = withEffect("extra-string-damping", {3.0, 1.0}).preset.string;
+    const auto bending = withEffect("extra-string-damping", {3.0, 2.0}).preset.string;
+    EXPECT_DOUBLE_EQ(internal.lossF, 3.0 * nominal.lossF);
+    EXPECT_DOUBLE_EQ(internal.lossB, nominal.lossB);
+    EXPECT_DOUBLE_EQ(bending.lossB, 3.0 * nominal.lossB);
+    EXPECT_DOUBLE_EQ(bending.lossF, nominal.lossF);
+    const double L = nominal.length;
+    EXPECT_LT(bending.lossFactor(2, L, false) / nominal.lossFactor(2, L, false),
+              bending.lossFactor(40, L, false) / nominal.lossFactor(40, L, false));
 }
 
 TEST(EffectCatalog, AmbientTemperatureOffsetsTheRosin)
@@ -167,7 +178,7 @@ TEST(EffectCatalog, OutOfRangeValuesAreRefusedByName)
     const Effect& growth = *findEffect("junction-growth");
     try
     {
-        applyEffect(growth, {0.2, 2.0}, model);
+        applyEffect(growth, {0.2, 2.0, 0.0}, model);
         FAIL() << "no error";
     }
     catch (const std::invalid_argument& e)
@@ -184,8 +195,8 @@ TEST(EffectCatalog, OutOfRangeValuesAreRefusedByName)
 
 TEST(EffectCatalog, DescribesValuesWithUnitsAndChoices)
 {
-    EXPECT_EQ(describeEffect(*findEffect("junction-growth"), {0.2, 0.005}),
-              "junction-growth: growth = 0.2, onsetTime = 0.005 s");
+    EXPECT_EQ(describeEffect(*findEffect("junction-growth"), {0.2, 0.005, 1.0}),
+              "junction-growth: growth = 0.2, onsetTime = 0.005 s, ageingForm = saturating");
     EXPECT_EQ(describeEffect(*findEffect("breakaway-jump"), {1}), "breakaway-jump: jumpCurve = bow");
     EXPECT_EQ(describeEffect(*findEffect("hertz-contact"), {}), "hertz-contact");
 }

@@ -66,6 +66,20 @@ TEST(JunctionGrowth, ASlipErasesTheMemory)
     EXPECT_DOUBLE_EQ(law.growthFactor(), 1.0);
 }
 
+// The saturating form (issue 16's signature families): 1 + G (1 - e^{-t/tau}) at one hold time, and a long
+// hold stays below 1 + G where the logarithmic form has gone past it.
+TEST(JunctionGrowth, SaturatingFormApproachesItsLimit)
+{
+    JunctionGrowthLaw law(classical(), 0.2, 0.002, AgeingForm::Saturating);
+    law.prepare(kFs);
+    for (int k = 0; k < 96; ++k)
+        law.solve({0.0, 1.0, 1.0}); // held 2 ms = tau
+    EXPECT_NEAR(law.growthFactor(), 1.0 + 0.2 * (1.0 - std::exp(-1.0)), 1e-3);
+    for (int k = 0; k < 4800; ++k)
+        law.solve({0.0, 1.0, 1.0});             // and 100 ms more
+    EXPECT_NEAR(law.growthFactor(), 1.2, 1e-6); // where the logarithmic form would be at 1.79
+}
+
 TEST(StickingCreep, FollowsTheDashpotWhileStuckAndTheLawWhileSliding)
 {
     const double eta = 50.0, L = 1.2;

@@ -100,9 +100,8 @@ std::vector<double> drawEffectValues(const EffectRequest& request, std::uint64_t
         const double u = random.uniform();
         const bool negative = random.uniform() < 0.5;
         double v = 0.0;
-        if (!p.choices.empty())
-            v = std::min(std::floor(u * static_cast<double>(p.choices.size())),
-                         static_cast<double>(p.choices.size() - 1));
+        if (!p.choices.empty()) // uniform over the choices drawMin..drawMax
+            v = std::min(p.drawMin + std::floor(u * (p.drawMax - p.drawMin + 1.0)), p.drawMax);
         else if (p.logarithmic)
             v = roundSignificant(p.drawMin * std::pow(p.drawMax / p.drawMin, u), 3);
         else

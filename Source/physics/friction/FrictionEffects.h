@@ -4,15 +4,17 @@
 #include <memory>
 
 #include "FrictionLaw.h"
+#include "JunctionGrowthLaw.h"
 
 namespace rosin::physics
 {
 
 struct FrictionEffects
 {
-    double junctionGrowth = 0.0;       ///< JunctionGrowthLaw: fractional static-limit gain per e-fold
-    double junctionGrowthTime = 0.005; ///< s, tau_c: hold time at which ageing sets in
-    double creepResistance = 0.0;      ///< StickingCreepLaw: eta in N s/m; 0 = no creep
+    double junctionGrowth = 0.0;          ///< JunctionGrowthLaw: fractional static-limit gain per e-fold
+    double junctionGrowthTime = 0.005;    ///< s, tau_c: hold time at which ageing sets in
+    double creepResistance = 0.0;         ///< StickingCreepLaw: eta in N s/m; 0 = no creep
+    bool junctionGrowthSaturates = false; ///< JunctionGrowthLaw's AgeingForm::Saturating instead of log
 
     bool any() const noexcept { return junctionGrowth > 0.0 || creepResistance > 0.0; }
 };

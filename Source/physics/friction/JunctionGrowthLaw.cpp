@@ -6,8 +6,9 @@
 namespace rosin::physics
 {
 
-JunctionGrowthLaw::JunctionGrowthLaw(std::unique_ptr<FrictionLaw> inner, double growth, double tauSeconds)
-    : inner_(std::move(inner)), growth_(growth), tau_(tauSeconds)
+JunctionGrowthLaw::JunctionGrowthLaw(std::unique_ptr<FrictionLaw> inner, double growth, double tauSeconds,
+                                     AgeingForm form)
+    : inner_(std::move(inner)), growth_(growth), tau_(tauSeconds), form_(form)
 {
     if (!inner_)
         throw std::invalid_argument("JunctionGrowthLaw: no friction law to wrap");
@@ -30,7 +31,8 @@ void JunctionGrowthLaw::reset() noexcept
 
 double JunctionGrowthLaw::growthFactor() const noexcept
 {
-    return 1.0 + growth_ * std::log1p(holdTime() / tau_);
+    const double x = holdTime() / tau_;
+    return 1.0 + growth_ * (form_ == AgeingForm::Saturating ? -std::expm1(-x) : std::log1p(x));
 }
 
 JunctionSolution JunctionGrowthLaw::solve(const JunctionInput& in) noexcept

@@ -5,7 +5,10 @@
 // passes the wrapped law a normal force scaled by
 //     g(t_h) = 1 + growth ln(1 + t_h / tau_c),    growth = beta_a / mu_s0,
 // while the contact sticks (t_h = time since the last sliding sample), and the plain force while it slides
-// (g(0) = 1: a slip breaks the junctions and the memory). For the curve laws that scales the static limit
+// (g(0) = 1: a slip breaks the junctions and the memory). Or, saturating (AgeingForm::Saturating),
+//     g(t_h) = 1 + growth (1 - exp(-t_h / tau_c)),
+// the form of an area that creeps towards a limit rather than on logarithmically: the data of a short hold
+// cannot tell the two apart, a long one can. For the curve laws that scales the static limit
 // mu_s N exactly; for the thermal laws it scales the contact area A(Fb), which is what ageing grows.
 // Real-time safe; the wrapped law keeps its own state.
 #include <memory>
@@ -15,12 +18,19 @@
 namespace rosin::physics
 {
 
+enum class AgeingForm
+{
+    Logarithmic,
+    Saturating
+};
+
 class JunctionGrowthLaw final : public FrictionLaw
 {
   public:
-    /// growth: fractional increase of the static limit per e-fold of (1 + t_h / tau_c), >= 0.
-    /// tauSeconds: the hold time at which ageing sets in, > 0.
-    JunctionGrowthLaw(std::unique_ptr<FrictionLaw> inner, double growth, double tauSeconds);
+    /// growth: fractional increase of the static limit per e-fold of (1 + t_h / tau_c) (logarithmic) or at
+    /// saturation, >= 0. tauSeconds: the hold time at which ageing sets in, > 0.
+    JunctionGrowthLaw(std::unique_ptr<FrictionLaw> inner, double growth, double tauSeconds,
+                      AgeingForm form = AgeingForm::Logarithmic);
 
     void prepare(double sampleRate) override;
     void reset() noexcept override;
@@ -38,6 +48,7 @@ class JunctionGrowthLaw final : public FrictionLaw
     std::unique_ptr<FrictionLaw> inner_;
     double growth_;
     double tau_;
+    AgeingForm form_;
     double T_ = 1.0 / 48000.0;
     long holdSamples_ = 0;
 };
