@@ -46,6 +46,12 @@ std::optional<double> creepIndex(const std::vector<double>& force, const lab::Fi
     for (std::size_t k = from; k <= to; ++k)
         sum += x[k];
     const double mean = sum / static_cast<double>(to - from + 1);
+    // The index compares a rising pre-slip force with its parabola; where the force at 0.6 t1 is not
+    // between 0 and the force at the slip (an early partial slip, a slip found after the force had
+    // already fallen: seen at the lowest forces in both Rosin's and an independent model), there is no
+    // rise to compare, and the index (below -1.78) would be a number without a meaning.
+    if (!(mean > 0.0 && mean < slip.forceAtSlip))
+        return std::nullopt;
     return 1.0 - mean / (kCreepPoint * kCreepPoint * slip.forceAtSlip);
 }
 // The bow's velocity over the trial: recorded, or the gesture's nominal one.

@@ -8,7 +8,8 @@
 //   creep            pre-slip shortfall against the rigid-sticking parabola F ~ t^2:
 //                    1 - F(0.6 t1) / (0.36 F(t1)), F the high-pass-undone force averaged over +-5 % of t1
 //                    around 0.6 t1, F(t1) the fitted force at the slip (0: rigid sticking; > 0: the force
-//                    rises faster than t^2 late in the hold, as a creeping or ageing contact gives)
+//                    rises faster than t^2 late in the hold, as a creeping or ageing contact gives);
+//                    not read where F(0.6 t1) is not between 0 and F(t1) (no rising pre-slip force)
 //   firstSlipTime    t1, s (the slip at the bow: the first fall minus the travel time beta P / 2)
 //   transientPeriods periods from t1 to lasting Helmholtz motion (lab::measureTransient on the force's slip
 //                    onsets), capped at 20 (the seed's "not reached" counts as 20)

@@ -49,7 +49,8 @@ double bestCoefficient(int m, const std::vector<double>& w, const std::vector<do
 }
 } // namespace
 
-DispersionDesign designDispersion(double loopSamples, double f0, double B, double sampleRate)
+DispersionDesign designDispersion(double loopSamples, double f0, double B, double sampleRate,
+                                  const std::function<double(double)>& otherDelay)
 {
     if (!(B > 0.0))
         return {};
@@ -60,7 +61,10 @@ DispersionDesign designDispersion(double loopSamples, double f0, double B, doubl
         const double fn = n * f0 * std::sqrt(1.0 + B * n * n);
         w.push_back(2.0 * std::numbers::pi * fn / sampleRate);
         // The loop delay that puts mode n at fn, minus the fundamental's.
-        need.push_back(loopSamples * (1.0 / std::sqrt(1.0 + B * n * n) - 1.0 / std::sqrt(1.0 + B)));
+        double d = loopSamples * (1.0 / std::sqrt(1.0 + B * n * n) - 1.0 / std::sqrt(1.0 + B));
+        if (otherDelay)
+            d -= otherDelay(fn) - otherDelay(f0 * std::sqrt(1.0 + B));
+        need.push_back(d);
     }
     // A delay error of d samples moves a partial by 1731 d / loop cents.
     const double good = kGoodCents * loopSamples / 1731.0;

@@ -10,6 +10,7 @@
 //
 // The cascade is designed for the whole loop and then shared between the two sides of the bow in proportion
 // to their lengths (equal sections), as the stiffness is spread along the string.
+#include <functional>
 #include <vector>
 
 namespace rosin::discovery
@@ -23,7 +24,10 @@ struct DispersionDesign
 };
 
 /// For a loop of `loopSamples` at f0 with inharmonicity B (B = pi^2 EI / (P L^2)). B <= 0: no sections.
-DispersionDesign designDispersion(double loopSamples, double f0, double inharmonicity, double sampleRate);
+/// `otherDelay` (samples at f Hz, may be empty): the phase delay of the loop's other filters (the loss
+/// filters), whose change with frequency the cascade makes up for too.
+DispersionDesign designDispersion(double loopSamples, double f0, double inharmonicity, double sampleRate,
+                                  const std::function<double(double)>& otherDelay = {});
 
 class DispersionAllpass
 {

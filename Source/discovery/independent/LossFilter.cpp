@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <numbers>
 
 namespace rosin::discovery
@@ -9,11 +10,29 @@ namespace rosin::discovery
 
 namespace
 {
-// Attenuation -ln|H| of the one-pole (without its gain) at normalised angular frequency w: it is zero at DC
-// and grows with w and with the pole p, so p follows from the difference of two targets by bisection.
-double shape(double p, double w)
+// The filter's response at normalised angular frequency w.
+std::complex<double> response(double g, double p, double w)
 {
-    return 0.5 * std::log(1.0 - 2.0 * p * std::cos(w) + p * p) - std::log(1.0 - p);
+    const std::complex<double> lowPass = (1.0 - p) / (1.0 - p * std::polar(1.0, -w));
+    return 1.0 - g + g * lowPass;
+}
+
+// Attenuation -ln|H| at w.
+double attenuation(double g, double p, double w)
+{
+    return -std::log(std::abs(response(g, p, w)));
+}
+
+// The share g (0..1) that gives attenuation a at w for pole p (attenuation grows with g), by bisection.
+double shareFor(double p, double w, double a)
+{
+    double lo = 0.0, hi = 1.0;
+    for (int i = 0; i < 60; ++i)
+    {
+        const double mid = 0.5 * (lo + hi);
+        (attenuation(mid, p, w) < a ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
 }
 } // namespace
 
@@ -41,28 +60,35 @@ OnePoleLoss::OnePoleLoss(const LossLaw& eta, double tau, double f1, double f2, d
     const double a2 = std::numbers::pi * eta(f2) * f2 * tau;
     const double w1 = 2.0 * std::numbers::pi * f1 / sampleRate;
     const double w2 = 2.0 * std::numbers::pi * f2 / sampleRate;
-    const double target = std::max(0.0, a2 - a1);
-    double lo = 0.0, hi = 0.999;
+    // For each pole, g makes the attenuation at f1 exact, which needs a pole at least as large as the one
+    // that gives a1 with g = 1 (the plain one-pole); from there the ratio a(f2) / a(f1) falls from
+    // ~(w2/w1)^2 towards 1 as p -> 1, so the pole that gives a2 at f2 follows by bisection.
+    double lo = 0.0, hi = 0.9999;
     for (int i = 0; i < 60; ++i)
     {
         const double mid = 0.5 * (lo + hi);
-        (shape(mid, w2) - shape(mid, w1) < target ? lo : hi) = mid;
+        (attenuation(1.0, mid, w1) < a1 ? lo : hi) = mid;
+    }
+    lo = hi;
+    hi = 0.9999;
+    for (int i = 0; i < 60; ++i)
+    {
+        const double mid = 0.5 * (lo + hi);
+        (attenuation(shareFor(mid, w1, a1), mid, w2) > a2 ? lo : hi) = mid;
     }
     pole_ = 0.5 * (lo + hi);
-    // The DC gain makes the attenuation at f1 exact; it may not exceed 1 (a passive string).
-    gain_ = std::min(1.0, std::exp(shape(pole_, w1) - a1));
+    gain_ = shareFor(pole_, w1, a1);
 }
 
 double OnePoleLoss::magnitude(double f) const noexcept
 {
-    const double w = 2.0 * std::numbers::pi * f / sampleRate_;
-    return gain_ * std::exp(-shape(pole_, w));
+    return std::abs(response(gain_, pole_, 2.0 * std::numbers::pi * f / sampleRate_));
 }
 
 double OnePoleLoss::phaseDelay(double f) const noexcept
 {
     const double w = 2.0 * std::numbers::pi * f / sampleRate_;
-    return std::atan2(pole_ * std::sin(w), 1.0 - pole_ * std::cos(w)) / w;
+    return -std::arg(response(gain_, pole_, w)) / w;
 }
 
 } // namespace rosin::discovery

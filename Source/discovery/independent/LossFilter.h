@@ -24,12 +24,16 @@ class OnePoleLoss
   public:
     OnePoleLoss() = default;
     /// Fits the filter to exp(-pi eta(f) f tau) at f1 and f2 (Hz, f1 < f2 < fs/4) for a round trip of tau s.
+    /// H(z) = 1 - g + g (1 - p) / (1 - p z^-1): unity at DC, so the string holds a static deflection as a
+    /// real one does (a loop gain below 1 at DC would let a held string relax under the bow like a dashpot:
+    /// the pre-slip rise of a slow Guettler start fell 8 % short of its parabola and the first slip came 5 %
+    /// late). The loss law's decay applies to vibration; a string under a static load loses nothing.
     OnePoleLoss(const LossLaw& eta, double tau, double f1, double f2, double sampleRate);
 
     double process(double x) noexcept
     {
-        y_ = gain_ * (1.0 - pole_) * x + pole_ * y_;
-        return y_;
+        y_ = (1.0 - pole_) * x + pole_ * y_;
+        return x + gain_ * (y_ - x);
     }
     void reset() noexcept { y_ = 0.0; }
 
@@ -37,7 +41,7 @@ class OnePoleLoss
     /// Phase delay (samples) at frequencyHz.
     double phaseDelay(double frequencyHz) const noexcept;
     double pole() const noexcept { return pole_; }
-    double gain() const noexcept { return gain_; }
+    double gain() const noexcept { return gain_; } ///< g: the share of the signal that is low-passed
 
   private:
     double gain_ = 1.0, pole_ = 0.0, sampleRate_ = 48000.0;

@@ -8,6 +8,12 @@
 namespace rosin::discovery
 {
 
+OnePoleLoss segmentLoss(const LossLaw& eta, double tau, double referenceHz, double sampleRate)
+{
+    const double f2 = std::min(36.0 * referenceHz, sampleRate / 5.0);
+    return OnePoleLoss(eta, tau, referenceHz, std::max(f2, 1.5 * referenceHz), sampleRate);
+}
+
 WaveguideSegment::WaveguideSegment(double roundTripSamples, const LossLaw& eta, double referenceHz,
                                    double sampleRate, DispersionAllpass dispersion)
     : out_(roundTripSamples + 8), back_(roundTripSamples + 8), dispersion_(std::move(dispersion))
@@ -18,9 +24,8 @@ WaveguideSegment::WaveguideSegment(double roundTripSamples, const LossLaw& eta, 
     // instead, the one-pole lost too little there: its Helmholtz motion came out 2 dB brighter than the loss
     // law makes it, a difference of numerics that would read as a missing effect.
     const double tau = roundTripSamples / sampleRate;
-    const double f2 = std::min(36.0 * referenceHz, sampleRate / 5.0);
     if (eta)
-        loss_ = OnePoleLoss(eta, tau, referenceHz, std::max(f2, 1.5 * referenceHz), sampleRate);
+        loss_ = segmentLoss(eta, tau, referenceHz, sampleRate);
     // The filters' delay at the reference comes out of the two lines, shared evenly (the dispersion cascade
     // may take half of the segment). A segment shorter than the line's minimum (torsion near the bridge at
     // small beta) runs slightly long.
@@ -41,7 +46,16 @@ WaveguideString::WaveguideString(const WaveguideSettings& s)
     // between bow and bridge disperse too. The loop stays tuned to c/(2L) at the fundamental (stiffness
     // would raise it by B/2: 0.05 cents).
     const double B = std::pow(std::numbers::pi, 2) * s.bendingStiffness / (s.tension * s.length * s.length);
-    const DispersionDesign design = designDispersion(2.0 * s.length / c * fs, f0_, B, fs);
+    std::function<double(double)> lossDelay;
+    if (s.transverseLoss)
+    {
+        const double loop = 2.0 * s.length / c;
+        const OnePoleLoss bridgeLoss = segmentLoss(s.transverseLoss, s.beta * loop, f0_, fs);
+        const OnePoleLoss nutLoss = segmentLoss(s.transverseLoss, (1.0 - s.beta) * loop, f0_, fs);
+        lossDelay = [bridgeLoss, nutLoss](double f)
+        { return bridgeLoss.phaseDelay(f) + nutLoss.phaseDelay(f); };
+    }
+    const DispersionDesign design = designDispersion(2.0 * s.length / c * fs, f0_, B, fs, lossDelay);
     const int bridgeSections = static_cast<int>(std::lround(s.beta * design.sections));
     bridge_ = WaveguideSegment(2.0 * s.beta * s.length / c * fs, s.transverseLoss, f0_, fs,
                                DispersionAllpass(design, bridgeSections, fs));

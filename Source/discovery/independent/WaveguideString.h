@@ -37,6 +37,10 @@ struct WaveguideSettings
 
 /// One side of the bow: a line to the far end (integer delay), the segment's loss, and a line back
 /// (fractional delay, shortened by the loss filter's phase delay at referenceHz).
+/// The loss filter of a segment whose round trip takes `tau` s: fitted at the reference (the string's
+/// fundamental) and at its 36th partial.
+OnePoleLoss segmentLoss(const LossLaw& eta, double tau, double referenceHz, double sampleRate);
+
 class WaveguideSegment
 {
   public:

@@ -1,6 +1,10 @@
 // Disc-average half-space Green's function (reference eq. 2.5) and its non-negative SOE fit (eq. 2.8).
 #include "ConductionKernel.h"
 
+#include <compare>
+#include <map>
+#include <mutex>
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -133,9 +137,61 @@ double ConductionKernel::integrateGreen(double t0, double t1, double a, double K
     return sum * h / 3.0;
 }
 
+namespace
+{
+// Fits already made in this process, by their inputs: a scan or rosin discover prepares the same contact
+// thousands of times (every trial simulator of every fit), and the NNLS fit cost a tenth of their time.
+// prepare() runs off the audio thread, so a lock here is allowed; the cache is dropped when it grows large.
+struct FitKey
+{
+    double a, K, rhoC, dt, maxTime, tauBelowDt, tauAboveMax, integralWeight;
+    int terms, pointsPerDecade;
+    auto operator<=>(const FitKey&) const = default;
+};
+struct FitResult
+{
+    double g0;
+    std::vector<double> tau, c;
+};
+constexpr std::size_t kMaxCachedFits = 512;
+std::mutex fitCacheMutex;
+std::map<FitKey, FitResult>& fitCache()
+{
+    static std::map<FitKey, FitResult> cache;
+    return cache;
+}
+} // namespace
+
 void ConductionKernel::fit(double a, double K, double rhoC, double dt, const FitOptions& opt)
 {
     radius_ = a, conductivity_ = K, heatCapacity_ = rhoC, dt_ = dt;
+    const FitKey key{a,
+                     K,
+                     rhoC,
+                     dt,
+                     opt.maxTime,
+                     opt.tauBelowDt,
+                     opt.tauAboveMax,
+                     opt.integralWeight,
+                     opt.terms,
+                     opt.pointsPerDecade};
+    {
+        std::lock_guard<std::mutex> lock(fitCacheMutex);
+        if (const auto it = fitCache().find(key); it != fitCache().end())
+        {
+            g0_ = it->second.g0, tau_ = it->second.tau, c_ = it->second.c;
+            return;
+        }
+    }
+    fitUncached(a, K, rhoC, dt, opt);
+    std::lock_guard<std::mutex> lock(fitCacheMutex);
+    if (fitCache().size() >= kMaxCachedFits)
+        fitCache().clear();
+    fitCache()[key] = {g0_, tau_, c_};
+}
+
+void ConductionKernel::fitUncached(double a, double K, double rhoC, double dt, const FitOptions& opt)
+{
     g0_ = integrateGreen(0.0, dt, a, K, rhoC);
     const int M = std::max(opt.terms, 2);
     const double tauLo = std::log(opt.tauBelowDt * dt), tauHi = std::log(opt.tauAboveMax * opt.maxTime);

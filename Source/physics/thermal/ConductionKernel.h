@@ -46,7 +46,8 @@ class ConductionKernel
     /// Non-negative weighted least-squares fit (relative error, Lawson-Hanson NNLS) of the SOE to G_avg on
     /// [dt, maxTime], log-spaced tau in [tauBelowDt dt, tauAboveMax maxTime]. One extra row asks that the
     /// scheme's discrete steady resistance g0 + sum c_m tau_m exp(-dt/tau_m) equal 8/(3 pi^2 K a), so the
-    /// time-stepped steady state matches eq. 2.7. Also computes the first-step weight g0 = int_0^dt G.
+    /// time-stepped steady state matches eq. 2.7. Also computes the first-step weight g0 = int_0^dt G. A fit
+    /// with the same inputs as an earlier one in this process is copied from it (a lock and a map look-up).
     void fit(double radiusM, double conductivity, double volumetricHeatCapacity, double timeStepS,
              const FitOptions& options);
     void fit(double radiusM, double conductivity, double volumetricHeatCapacity, double timeStepS)
@@ -74,6 +75,9 @@ class ConductionKernel
     int zeroTerms() const noexcept;
 
   private:
+    void fitUncached(double radiusM, double conductivity, double volumetricHeatCapacity, double timeStepS,
+                     const FitOptions& options);
+
     std::vector<double> c_, tau_;
     double g0_ = 0.0, dt_ = 0.0, radius_ = 0.0, conductivity_ = 0.0, heatCapacity_ = 0.0;
 };

@@ -119,5 +119,28 @@ TEST(IndependentTrial, FirstSlipAtTheRigsStaticCoefficientAfterTheParabolicRise)
     EXPECT_NEAR(std::abs(t.frictionForce[half]) / quasiStatic, 1.0, 0.05);
 }
 
+// A slow start holds the string for 0.2 s: a string that could not hold a static deflection (a loop gain
+// below 1 at DC) would relax under the bow like a dashpot, the force lagging its parabola more and more.
+// Here the friction at 0.6 t1 must be 0.36 of the friction at the slip (the parabola's own ratio), and t1
+// where the parabola reaches the static limit.
+TEST(IndependentTrial, ALongHoldFollowsTheParabolaToTheSlip)
+{
+    IndependentTrialSimulator sim(test::nominalRig(), test::kRate);
+    const double beta = 0.0899, force = 3.2, accel = 0.08;
+    const TrialTrace& t = sim.run(test::guettler(beta, force, accel, 0.35));
+    const std::size_t slip = test::firstSlip(t);
+    ASSERT_LT(slip, t.sticking.size());
+    const auto early = static_cast<std::size_t>(0.6 * static_cast<double>(slip));
+    const double ratio = std::abs(t.frictionForce[early]) / std::abs(t.frictionForce[slip - 1]);
+    const auto s = physics::stringFromCatalogue("cello-D3");
+    const double stiffness = 1.0 / (s.length * beta * (1.0 - beta) *
+                                    (1.0 / s.tension + 1.0 / (s.torsionalImpedance * s.torsionalWaveSpeed)));
+    const double expectedTime = std::sqrt(2.0 * test::peakFriction(t, slip + 1) / (stiffness * accel));
+    std::printf("long hold: f(0.6 t1) / f(t1) = %.4f (0.36), t1 = %.4f s (parabola %.4f s)\n", ratio,
+                slip / test::kRate, expectedTime);
+    EXPECT_NEAR(ratio, 0.36, 0.01);
+    EXPECT_NEAR(slip / test::kRate / expectedTime, 1.0, 0.015);
+}
+
 } // namespace
 } // namespace rosin::discovery

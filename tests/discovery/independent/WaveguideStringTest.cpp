@@ -119,6 +119,8 @@ TEST(WaveguideString, OnePoleMatchesTheLossTargetAtBothFitPoints)
     const OnePoleLoss loss(eta, tau, f0, 6.0 * f0, test::kRate);
     for (double f : {f0, 6.0 * f0})
         EXPECT_NEAR(loss.magnitude(f), std::exp(-std::numbers::pi * eta(f) * f * tau), 1e-9);
+    // A string under a static load loses nothing: unity at DC (else a held string creeps under the bow).
+    EXPECT_NEAR(loss.magnitude(0.0), 1.0, 1e-12);
 }
 
 } // namespace
