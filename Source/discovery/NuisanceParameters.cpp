@@ -1,5 +1,7 @@
 #include "NuisanceParameters.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace rosin::discovery
@@ -31,6 +33,12 @@ std::vector<NuisanceParameter> makeParameters()
                          .logarithmic = true,
                          .meaning = "the chain's low-pass corner / sample rate (0.5: none)"},
          &NuisanceValues::sensorBandwidth},
+        {EffectParameter{.name = "sensorDelay",
+                         .unit = "s",
+                         .min = 0.0,
+                         .max = 0.0015,
+                         .meaning = "how late the recording starts after the gesture"},
+         &NuisanceValues::sensorDelay},
     };
 }
 } // namespace
@@ -47,6 +55,11 @@ double sensorLowpassHz(const NuisanceValues& values, double sampleRate) noexcept
     return values.sensorBandwidth >= 0.495 ? 0.0 : values.sensorBandwidth * sampleRate;
 }
 
+std::size_t sensorDelaySamples(const NuisanceValues& values, double sampleRate) noexcept
+{
+    return static_cast<std::size_t>(std::max(0.0, std::round(values.sensorDelay * sampleRate)));
+}
+
 std::string describeNuisance(const NuisanceValues& values)
 {
     std::string text;
@@ -56,7 +69,9 @@ std::string describeNuisance(const NuisanceValues& values)
         if (v == p.nominal())
             continue;
         char part[80];
-        if (p.value == &NuisanceValues::sensorBandwidth)
+        if (p.value == &NuisanceValues::sensorDelay)
+            std::snprintf(part, sizeof(part), "%s %.3g ms", p.prior.name.c_str(), 1e3 * v);
+        else if (p.value == &NuisanceValues::sensorBandwidth)
             std::snprintf(part, sizeof(part), "%s %.3g of the sample rate", p.prior.name.c_str(), v);
         else
             std::snprintf(part, sizeof(part), "%s x%.3g", p.prior.name.c_str(), v);

@@ -17,6 +17,9 @@
 //   sensorBandwidth     0.2..0.5    the chain's low-pass corner (anti-aliasing, gauge resonance) over the
 //                                   sample rate, modelled as a second-order Butterworth; 0.5 (Nyquist) is
 //                                   none. A dataset states the high-pass it had but never its low-pass.
+//   sensorDelay         0..1.5 ms   how late the recording starts after the gesture (a trigger's latency):
+//                                   the format puts time zero at the gesture's start, which a lab knows to
+//                                   about a millisecond; the pre-slip rise's shape reads it (creep).
 // The physical ones act through SimulationModel (voiceConfig, frictionLaw), the sensor's in rosin discover's
 // simulation of the measurement chain (ModelRuns). JUCE-free.
 #include <cstddef>
@@ -37,6 +40,7 @@ struct NuisanceValues
     double stringLoss = 1.0;
     double sensorGain = 1.0;
     double sensorBandwidth = 0.5;
+    double sensorDelay = 0.0; ///< s
 
     bool operator==(const NuisanceValues&) const = default;
 };
@@ -48,11 +52,14 @@ struct NuisanceParameter
     double nominal() const { return NuisanceValues{}.*value; }
 };
 
-/// The seven parameters in the order above.
+/// The eight parameters in the order above.
 const std::vector<NuisanceParameter>& nuisanceParameters();
 
 /// The low-pass corner in Hz that `values` give at `sampleRate`; 0 when it is at Nyquist (no filter).
 double sensorLowpassHz(const NuisanceValues& values, double sampleRate) noexcept;
+
+/// The start delay in whole samples at `sampleRate`.
+std::size_t sensorDelaySamples(const NuisanceValues& values, double sampleRate) noexcept;
 
 /// "contactRadius x0.91, sensorGain x1.02, ..." for the ones away from nominal ("nominal" if none).
 std::string describeNuisance(const NuisanceValues& values);

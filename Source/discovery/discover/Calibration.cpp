@@ -49,7 +49,7 @@ CalibrationResult calibrate(const SearchInputs& in, const SimulationModel& model
         const double here = fit.bestValue(), atLow = fit.objective(low), atHigh = fit.objective(high);
         r.swing.push_back(std::max({here, atLow, atHigh}) - std::min({here, atLow, atHigh}));
         // One the data do not constrain stays where it is (nominal, or a prior end that was better).
-        if (r.swing.back() > kActiveSwing * r.objectiveBefore)
+        if (r.swing.back() > kActiveSwing * here)
             fit.golden(j, 0.5 * fit.span(j), 3);
     }
     std::vector<std::size_t> order(ps.size());
@@ -57,10 +57,8 @@ CalibrationResult calibrate(const SearchInputs& in, const SimulationModel& model
     std::sort(order.begin(), order.end(),
               [&r](std::size_t a, std::size_t b) { return r.swing[a] > r.swing[b]; });
     for (std::size_t j : order)
-        if (r.active.size() < kMaxActive && r.swing[j] > kActiveSwing * r.objectiveBefore)
+        if (r.active.size() < kMaxActive && r.swing[j] > kActiveSwing * fit.bestValue())
             r.active.push_back(j);
-    for (std::size_t j : r.active)
-        fit.golden(j, fit.span(j) / 6.0, 3);
     std::vector<double> best = fit.best();
     for (std::size_t j = 0; j < ps.size(); ++j)
         if (best[j] != ps[j].nominal())

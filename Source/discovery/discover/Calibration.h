@@ -4,11 +4,11 @@
 // against a baseline that is as right as the lab's tolerances allow, not against one that is off for
 // reasons that have nothing to do with it.
 //   Search: coordinate descent from nominal. Each parameter in turn: its prior's two ends, then, if the
-//           data care (below), a golden-section search (3 points) around the best of the three; a second
-//           pass refines the active ones over a sixth of their prior. 15-45 simulations of the training half.
+//           data care (below), a golden-section search (3 points) around the best of the three (the active
+//           ones are refined again with each candidate effect). 15-36 simulations of the training half.
 //   Active: the parameters the data constrain: the training objective moved by more than 2 % of its value
-//           across the prior, at most kMaxActive, largest first. Only these are fitted again together with
-//           each candidate effect (EffectSearch), which keeps a whole search within two minutes.
+//           there (as calibrated so far) across the prior, at most kMaxActive, largest first. Only these
+//           are fitted again together with each candidate effect (EffectSearch), which keeps a search short.
 // JUCE-free.
 #include <cstddef>
 #include <vector>

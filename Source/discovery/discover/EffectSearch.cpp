@@ -14,7 +14,8 @@ namespace rosin::discovery
 
 namespace
 {
-constexpr int kGridOne = 7, kGridTwo = 5, kGoldenSteps = 5, kJointSteps = 3;
+// Grid points per continuous axis: 7 for one parameter, 5 for two, 4 for two beside a choice (32 points).
+constexpr int kGridOne = 7, kGridTwo = 5, kGridTwoWithChoice = 4, kGoldenSteps = 5, kJointSteps = 3;
 /// An effect is fitted jointly with the calibration only when it alone already lowers the training
 /// objective by this share: one that explains nothing of the training half will not win on the held-out one,
 /// and the joint fit costs as much again.
@@ -45,7 +46,11 @@ ModelFit fitEffect(const SearchInputs& in, const SimulationModel& start, double 
             return m;
         },
         from);
-    const int points = ne == 1 ? kGridOne : kGridTwo;
+    int continuous = 0;
+    for (const auto& p : effect.parameters)
+        continuous += p.choices.empty() ? 1 : 0;
+    const int points =
+        continuous <= 1 ? kGridOne : (continuous < static_cast<int>(ne) ? kGridTwoWithChoice : kGridTwo);
     std::vector<std::size_t> effectAxes(ne);
     std::iota(effectAxes.begin(), effectAxes.end(), 0);
     if (ne > 0)

@@ -4,19 +4,19 @@
 // half; the best significant one is adopted, and the search repeats on what remains (at most three).
 //   Split: a checkerboard over the grid, (beta + force + motion index) even -> training, odd -> held out
 //          (repeats of a cell stay together), so both halves cover the whole scan.
-//   Fit:   a grid over the catalog's fit range (7 points for one parameter, 5 x 5 for two; log-spaced where
-//          the catalog says so; every choice), then a golden-section refinement of each continuous parameter
-//          around the best point (5 evaluations each), from the nuisance values as stated (nominal; after
-//          an adopted effect, those fitted with it): a calibration may already have bent them to mimic the
-//          effect. Then, if the effect lowered the training objective by 2 %, the calibration's active
-//          nuisance parameters are fitted again with the effect in place (3 each, over their prior) and the
-//          effect's parameters refined once more (3 each); values are rounded to 3 significant digits. The
-//          objective is the training trials' Student-t loss averaged over features (GapSummary::objective).
-//          Each evaluation simulates the training trials. Why held-out likelihood and not an information
-//          criterion: an effect's parameters are few but its fit is a search over a nonlinear, partly chaotic
-//          model, where parameter counting (AIC, BIC) says little about how much it can overfit; scoring on
-//          trials the fit never saw penalises exactly the flexibility the effect has, extra parameters
-//          included.
+//   Fit:   a grid over the catalog's fit range (7 points for one parameter, 5 x 5 for two, 4 x 4 for two
+//          beside a choice; log-spaced where the catalog says so; every choice), then a golden-section
+//          refinement of each continuous parameter around the best point (5 evaluations each), from the
+//          nuisance values as stated (nominal; after an adopted effect, those fitted with it): a calibration
+//          may already have bent them to mimic the effect. Then, if the effect lowered the training objective
+//          by 2 %, the calibration's active nuisance parameters are fitted again with the effect in place (3
+//          each, over their prior) and the effect's parameters refined once more (3 each); values are rounded
+//          to 3 significant digits. The objective is the training trials' Student-t loss averaged over
+//          features (GapSummary::objective). Each evaluation simulates the training trials. Why held-out
+//          likelihood and not an information criterion: an effect's parameters are few but its fit is a
+//          search over a nonlinear, partly chaotic model, where parameter counting (AIC, BIC) says little
+//          about how much it can overfit; scoring on trials the fit never saw penalises exactly the
+//          flexibility the effect has, extra parameters included.
 //   Score: against the current model (the calibrated baseline and the effects adopted so far):
 //          held-out gain = 1 - sum e_i(with effect) / sum e_i(current model) over the held-out trials,
 //          e_i a trial's share of the objective (objectiveShares), so the gain is the held-out objective's

@@ -98,6 +98,14 @@ std::vector<TrialFeatures> simulateFeatures(const SimulationModel& model, const 
             applySensorResponse(layout, channels, dataset.sensor, fs);
             applyGaugeCalibration(layout, channels, model.nuisance.sensorGain,
                                   sensorLowpassHz(model.nuisance, fs), fs);
+            // A recording that starts late: every channel shifted, the trial's length kept.
+            if (const std::size_t d = sensorDelaySamples(model.nuisance, fs); d > 0)
+                for (auto& ch : channels)
+                {
+                    const std::size_t n = ch.size();
+                    ch.insert(ch.begin(), d, 0.0);
+                    ch.resize(n);
+                }
             return computeTrialFeatures(
                 *recorded(layout, channels, "bridgeForce"), featureContext(dataset, trial),
                 {recorded(layout, channels, "bowPointVelocity"), recorded(layout, channels, "frictionForce"),
