@@ -86,32 +86,6 @@ TEST(FeatureScatter, ARegimesScatterIsItsMismatchRate)
     EXPECT_EQ(s.method[kRegime], "resolution");
 }
 
-// A feature whose noise grows along the motion axis (8 forces x 6 motions, noise 0.01 in the first rows and
-// 0.1 in the last): the noisy rows get their own, larger sigma, the quiet ones keep the grid's.
-TEST(FeatureScatter, ANoisierRowGetsItsOwnScatter)
-{
-    ScanGrid grid;
-    grid.forces.assign(8, 0.0);
-    grid.motion.assign(6, 0.0);
-    grid.betas = {0.1};
-    std::vector<TrialFeatures> measured;
-    std::mt19937_64 random(5);
-    std::normal_distribution<double> normal;
-    for (std::size_t m = 0; m < 6; ++m)
-        for (std::size_t i = 0; i < 8; ++i)
-        {
-            grid.cells.push_back(GridCell{0, i, m, {measured.size()}});
-            measured.push_back(withFeature(kJump, 0.1 * i + (m >= 4 ? 0.1 : 0.01) * normal(random)));
-        }
-    const FeatureScatter s = measureScatter(grid, measured, 48000.0);
-    const double quiet = s.trialSigma(0, kJump), noisy = s.trialSigma(5 * 8, kJump);
-    std::printf("[figure] row scatter: quiet row %.3g, noisy row %.3g, grid %.3g\n", quiet, noisy,
-                s.sigma[kJump]);
-    EXPECT_DOUBLE_EQ(quiet, s.sigma[kJump]);
-    EXPECT_GT(noisy, 0.05); // towards the noisy rows' own 0.1, not the grid's mixture
-    EXPECT_GT(noisy, 2.0 * quiet);
-}
-
 TEST(GapMeasure, TrialSharesAddUpToTheObjective)
 {
     std::vector<TrialFeatures> measured, simulated;

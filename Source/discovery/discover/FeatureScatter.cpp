@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <optional>
 #include <tuple>
@@ -13,7 +12,6 @@ namespace rosin::discovery
 namespace
 {
 constexpr double kMadToSigma = 1.4826;
-constexpr std::size_t kMinLocalDifferences = 8; ///< second differences a row's own scatter needs
 
 double median(std::vector<double> v)
 {
@@ -69,14 +67,8 @@ std::optional<double> pooledRepeats(const ScanGrid& grid, const std::vector<Tria
     return std::sqrt(sum / static_cast<double>(dof));
 }
 
-struct SecondDifference
-{
-    std::size_t motion; ///< the centre cell's motion index
-    double value;
-};
-
-std::vector<SecondDifference> secondDifferences(const ScanGrid& grid,
-                                                const std::vector<TrialFeatures>& measured, std::size_t f)
+std::vector<double> secondDifferences(const ScanGrid& grid, const std::vector<TrialFeatures>& measured,
+                                      std::size_t f)
 {
     // Cell means by (beta, force, motion) index.
     std::map<std::tuple<std::size_t, std::size_t, std::size_t>, double> value;
@@ -100,39 +92,17 @@ std::vector<SecondDifference> secondDifferences(const ScanGrid& grid,
         auto it = value.find({b, static_cast<std::size_t>(i), static_cast<std::size_t>(m)});
         return it == value.end() ? std::nullopt : std::optional<double>(it->second);
     };
-    std::vector<SecondDifference> d2;
+    std::vector<double> d2;
     for (const auto& [key, centre] : value)
     {
         const auto [b, i, m] = key;
         const long li = static_cast<long>(i), lm = static_cast<long>(m);
         if (auto lo = at(b, li - 1, lm), hi = at(b, li + 1, lm); lo && hi)
-            d2.push_back({m, *lo - 2.0 * centre + *hi});
+            d2.push_back(*lo - 2.0 * centre + *hi);
         if (auto lo = at(b, li, lm - 1), hi = at(b, li, lm + 1); lo && hi)
-            d2.push_back({m, *lo - 2.0 * centre + *hi});
+            d2.push_back(*lo - 2.0 * centre + *hi);
     }
     return d2;
-}
-
-double sigmaFromSecondDifferences(const std::vector<double>& d2)
-{
-    return std::max(kMadToSigma * mad(d2), trimmedRms(d2)) / std::sqrt(6.0);
-}
-
-// Per motion index: the scatter of the second differences centred on that row and its two neighbours, where
-// there are at least kMinLocalDifferences of them; NaN elsewhere.
-std::vector<double> rowSigmas(const std::vector<SecondDifference>& d2, std::size_t rows)
-{
-    std::vector<double> out(rows, std::numeric_limits<double>::quiet_NaN());
-    for (std::size_t m = 0; m < rows; ++m)
-    {
-        std::vector<double> near;
-        for (const auto& d : d2)
-            if (d.motion + 1 >= m && d.motion <= m + 1)
-                near.push_back(d.value);
-        if (near.size() >= kMinLocalDifferences)
-            out[m] = sigmaFromSecondDifferences(near);
-    }
-    return out;
 }
 
 // A category's scatter: the share of pairs that disagree, among repeats in one cell (at least 5 pairs) or
@@ -168,23 +138,6 @@ mismatchRate(const ScanGrid& grid, const std::vector<TrialFeatures>& measured, s
         return std::pair{static_cast<double>(differ) / static_cast<double>(pairs), "neighbours"};
     return std::nullopt;
 }
-
-// Where a row of the grid scatters more than the whole (a feature whose noise grows as its trials shorten),
-// its trials get that row's scatter.
-void addRowScatter(FeatureScatter& s, const ScanGrid& grid, std::size_t f, const std::vector<double>& rows,
-                   double global)
-{
-    for (const auto& cell : grid.cells)
-        for (std::size_t t : cell.trials)
-        {
-            const double local = cell.motion < rows.size() ? rows[cell.motion] : global;
-            if (!(local > global))
-                continue;
-            if (s.local.size() <= t)
-                s.local.resize(t + 1);
-            s.local[t][f] = local;
-        }
-}
 } // namespace
 
 FeatureScatter measureScatter(const ScanGrid& grid, const std::vector<TrialFeatures>& measured,
@@ -208,12 +161,8 @@ FeatureScatter measureScatter(const ScanGrid& grid, const std::vector<TrialFeatu
         }
         else if (auto d2 = secondDifferences(grid, measured, f); d2.size() >= 4)
         {
-            std::vector<double> values;
-            for (const auto& d : d2)
-                values.push_back(d.value);
-            sigma = sigmaFromSecondDifferences(values);
+            sigma = std::max(kMadToSigma * mad(d2), trimmedRms(d2)) / std::sqrt(6.0);
             s.method[f] = "neighbours";
-            addRowScatter(s, grid, f, rowSigmas(d2, std::max<std::size_t>(1, grid.motion.size())), sigma);
         }
         else
         {
@@ -237,12 +186,10 @@ FeatureScatter measureScatter(const ScanGrid& grid, const std::vector<TrialFeatu
 
 double FeatureScatter::trialSigma(std::size_t trial, std::size_t feature) const noexcept
 {
-    const double own = trial < local.size() && local[trial][feature] > sigma[feature] ? local[trial][feature]
-                                                                                      : sigma[feature];
     if (trial >= sensitivity.size())
-        return own;
+        return sigma[feature];
     const double s = sensitivity[trial][feature];
-    return std::sqrt(own * own + s * s);
+    return std::sqrt(sigma[feature] * sigma[feature] + s * s);
 }
 
 } // namespace rosin::discovery

@@ -8,10 +8,7 @@
 //     larger of 1.4826 MAD(d2) and the rms of d2 after dropping its largest 10 % (a regime boundary crossing
 //     the grid is an outlier, not scatter; a heavy-tailed noise, as of a feature read at few samples, is
 //     scatter that the MAD alone would miss). The feature's own curvature over the grid adds to it, so this
-//     errs on the side of a larger scatter (a smaller gap). The scatter need not be the same everywhere (a
-//     feature read from a short pre-slip rise is noisier than one from a long one): where the second
-//     differences centred on a row of the motion axis and its two neighbours (at least 8) scatter more than
-//     the whole grid's, that row's trials take their own sigma.
+//     errs on the side of a larger scatter (a smaller gap).
 //   * Too few triples (< 4): 1.4826 MAD of the feature over all trials (a broad upper bound).
 // Every scatter is at least the feature's resolution (featureResolution).
 // A category (the regime) has no difference to scale: its scatter is the share q of pairs that disagree,
@@ -40,12 +37,9 @@ struct FeatureScatter
     /// trial's settings are nudged within a bowing machine's accuracy (ModelSensitivity.h); NaN where the
     /// feature appears or vanishes under the nudge.
     std::vector<std::array<double, kFeatureCount>> sensitivity{};
-    /// Per trial (indexed like dataset.trials; empty or 0: none), the scatter of the trial's row of the grid
-    /// (its motion index and the rows beside it) where that is larger than sigma (method "neighbours").
-    std::vector<std::array<double, kFeatureCount>> local{};
 
-    /// The sigma of feature f in trial t: sqrt(max(sigma_f, local)^2 + sensitivity^2), or NaN when the
-    /// trial's feature is unstable under the nudge (then it is not compared).
+    /// The sigma of feature f in trial t: sqrt(sigma_f^2 + sensitivity^2), or NaN when the trial's feature
+    /// is unstable under the nudge (then it is not compared).
     double trialSigma(std::size_t trial, std::size_t feature) const noexcept;
 };
 
