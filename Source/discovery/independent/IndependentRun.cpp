@@ -2,26 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <memory>
 #include <stdexcept>
-#include <thread>
 
 #include "IndependentStreams.h"
 #include "IndependentTrial.h"
-#include "discovery/ParallelTrials.h"
 
 namespace rosin::discovery
 {
 
 namespace
 {
-struct CleanTrial
-{
-    std::vector<std::vector<double>> channels; ///< converted (delay, anti-aliasing, rate, gain), no noise
-    double peakBridgeForce = 0.0;
-};
-
 const std::vector<double>& traceChannel(const TrialTrace& t, const std::string& name)
 {
     if (name == "bridgeForce")
@@ -130,37 +121,12 @@ void runIndependentSynthData(SynthPlan& plan, unsigned threads, const MeasuredTr
 {
     const IndependentTruth truth = independentTruth(plan);
     (void)rigFromPlan(plan, truth.nuisance, truth.effects); // throws before any thread starts
-    const std::size_t n = plan.dataset.trials.size();
-    const std::vector<std::size_t> pilot = pilotTrials(n);
-    std::vector<std::size_t> jobs = pilot;
-    for (std::size_t i = 0; i < n; ++i)
-        if (!std::binary_search(pilot.begin(), pilot.end(), i))
-            jobs.push_back(i);
-
-    std::map<std::size_t, CleanTrial> waiting;
-    std::vector<double> pilotPeaks;
-    std::size_t nextToWrite = 0;
-    auto take = [&](std::size_t i, CleanTrial&& trial)
-    {
-        if (std::binary_search(pilot.begin(), pilot.end(), i))
-            pilotPeaks.push_back(trial.peakBridgeForce);
-        waiting.emplace(i, std::move(trial));
-        if (pilotPeaks.size() < pilot.size())
-            return;
-        if (!plan.dataset.sensor.noiseRms)
-            plan.dataset.sensor.noiseRms = noiseFromPeaks(pilotPeaks);
-        for (auto it = waiting.find(nextToWrite); it != waiting.end(); it = waiting.find(nextToWrite))
-        {
-            measure(plan, nextToWrite, it->second.channels);
-            sink(nextToWrite, it->second.channels);
-            waiting.erase(it);
-            ++nextToWrite;
-        }
-    };
-    const unsigned count = threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
     const SynthPlan& constPlan = plan;
-    runParallel<CleanTrial>(
-        jobs, count, [&constPlan, &truth] { return makeWorker(constPlan, truth); }, take);
+    runPilotFirst(
+        plan, threads, [&constPlan, &truth] { return makeWorker(constPlan, truth); },
+        [&constPlan](std::size_t i, std::vector<std::vector<double>>& channels)
+        { measure(constPlan, i, channels); },
+        sink);
 }
 
 } // namespace rosin::discovery

@@ -16,12 +16,6 @@ namespace
 {
 constexpr std::size_t kPilotTrials = 8;
 
-struct CleanTrial
-{
-    std::vector<std::vector<double>> channels; ///< as simulated, dataset channel order
-    double peakBridgeForce = 0.0;              ///< N, max |bridgeForce|
-};
-
 std::function<CleanTrial(std::size_t)> makeWorker(const SynthPlan& plan)
 {
     auto simulator =
@@ -72,7 +66,9 @@ double noiseFromPeaks(std::vector<double> peaks)
     return std::round(rms * scale) / scale;
 }
 
-void runSynthData(SynthPlan& plan, unsigned threads, const MeasuredTrialSink& sink)
+void runPilotFirst(SynthPlan& plan, unsigned threads,
+                   const std::function<std::function<CleanTrial(std::size_t)>()>& makeWorker,
+                   const TrialMeasurement& measure, const MeasuredTrialSink& sink)
 {
     const std::size_t n = plan.dataset.trials.size();
     const std::vector<std::size_t> pilot = pilotTrials(n);
@@ -95,16 +91,24 @@ void runSynthData(SynthPlan& plan, unsigned threads, const MeasuredTrialSink& si
             plan.dataset.sensor.noiseRms = noiseFromPeaks(pilotPeaks);
         for (auto it = waiting.find(nextToWrite); it != waiting.end(); it = waiting.find(nextToWrite))
         {
-            measure(plan, nextToWrite, it->second.channels);
+            measure(nextToWrite, it->second.channels);
             sink(nextToWrite, it->second.channels);
             waiting.erase(it);
             ++nextToWrite;
         }
     };
     const unsigned count = threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
+    runParallel<CleanTrial>(jobs, count, makeWorker, take);
+}
+
+void runSynthData(SynthPlan& plan, unsigned threads, const MeasuredTrialSink& sink)
+{
     const SynthPlan& constPlan = plan;
-    runParallel<CleanTrial>(
-        jobs, count, [&constPlan] { return makeWorker(constPlan); }, take);
+    runPilotFirst(
+        plan, threads, [&constPlan] { return makeWorker(constPlan); },
+        [&constPlan](std::size_t i, std::vector<std::vector<double>>& channels)
+        { measure(constPlan, i, channels); },
+        sink);
 }
 
 } // namespace rosin::discovery

@@ -21,6 +21,23 @@ namespace rosin::discovery
 using MeasuredTrialSink =
     std::function<void(std::size_t index, const std::vector<std::vector<double>>& channels)>;
 
+/// A trial as simulated, before the measurement chain's high-pass, noise and fault.
+struct CleanTrial
+{
+    std::vector<std::vector<double>> channels; ///< dataset channel order
+    double peakBridgeForce = 0.0;              ///< N, max |bridgeForce|
+};
+
+/// Turns a clean trial into a measured one in place (high-pass, noise, fault), on the calling thread.
+using TrialMeasurement = std::function<void(std::size_t index, std::vector<std::vector<double>>& channels)>;
+
+/// The schedule both generators share: the pilot's trials first, the noise floor from their peaks
+/// (noiseFromPeaks, unless already set), then every trial measured and handed to `sink` in trial order.
+/// `makeWorker` is called once per thread and returns that thread's simulator.
+void runPilotFirst(SynthPlan& plan, unsigned threads,
+                   const std::function<std::function<CleanTrial(std::size_t)>()>& makeWorker,
+                   const TrialMeasurement& measure, const MeasuredTrialSink& sink);
+
 /// Sets plan.dataset.sensor.noiseRms (before the first sink call) and calls `sink` once per trial, in trial
 /// order, on the calling thread. threads = 0: every core.
 void runSynthData(SynthPlan& plan, unsigned threads, const MeasuredTrialSink& sink);
