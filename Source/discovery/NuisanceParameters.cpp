@@ -37,7 +37,7 @@ std::vector<NuisanceParameter> makeParameters()
                          .unit = "s",
                          .min = 0.0,
                          .max = 0.0015,
-                         .meaning = "how late the recording starts after the gesture"},
+                         .meaning = "how late the force channels are after the gesture"},
          &NuisanceValues::sensorDelay},
     };
 }

@@ -17,9 +17,11 @@
 //   sensorBandwidth     0.2..0.5    the chain's low-pass corner (anti-aliasing, gauge resonance) over the
 //                                   sample rate, modelled as a second-order Butterworth; 0.5 (Nyquist) is
 //                                   none. A dataset states the high-pass it had but never its low-pass.
-//   sensorDelay         0..1.5 ms   how late the recording starts after the gesture (a trigger's latency):
-//                                   the format puts time zero at the gesture's start, which a lab knows to
-//                                   about a millisecond; the pre-slip rise's shape reads it (creep).
+//   sensorDelay         0..1.5 ms   how late the force channels are after the gesture: a trigger's latency
+//                                   (the format puts time zero at the gesture's start, which a lab knows to
+//                                   about a millisecond) and the force chain's own lag behind the recorded
+//                                   bow velocity, which the features align each trial to where they can
+//                                   (GestureStart); the pre-slip rise's shape reads it (creep).
 // The physical ones act through SimulationModel (voiceConfig, frictionLaw), the sensor's in rosin discover's
 // simulation of the measurement chain (ModelRuns). JUCE-free.
 #include <cstddef>

@@ -98,14 +98,16 @@ std::vector<TrialFeatures> simulateFeatures(const SimulationModel& model, const 
             applySensorResponse(layout, channels, dataset.sensor, fs);
             applyGaugeCalibration(layout, channels, model.nuisance.sensorGain,
                                   sensorLowpassHz(model.nuisance, fs), fs);
-            // A recording that starts late: every channel shifted, the trial's length kept.
+            // Force channels that lag the gesture (and its recorded velocity): shifted, length kept.
             if (const std::size_t d = sensorDelaySamples(model.nuisance, fs); d > 0)
-                for (auto& ch : channels)
-                {
-                    const std::size_t n = ch.size();
-                    ch.insert(ch.begin(), d, 0.0);
-                    ch.resize(n);
-                }
+                for (std::size_t c = 0; c < layout.size(); ++c)
+                    if (layout[c].name == "bridgeForce" || layout[c].name == "frictionForce")
+                    {
+                        auto& ch = channels[c];
+                        const std::size_t n = ch.size();
+                        ch.insert(ch.begin(), d, 0.0);
+                        ch.resize(n);
+                    }
             return computeTrialFeatures(
                 *recorded(layout, channels, "bridgeForce"), featureContext(dataset, trial),
                 {recorded(layout, channels, "bowPointVelocity"), recorded(layout, channels, "frictionForce"),

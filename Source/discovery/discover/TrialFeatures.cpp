@@ -6,6 +6,7 @@
 
 #include "lab/ContactCycle.h"
 #include "lab/FirstSlip.h"
+#include "lab/GestureStart.h"
 #include "lab/HarmonicTilt.h"
 #include "lab/RegimeClassifier.h"
 #include "lab/SlipOnsets.h"
@@ -31,15 +32,20 @@ std::optional<double> tilt(const std::vector<double>& force, std::size_t from, c
     return lab::harmonicTiltDb(force, from, force.size(), o);
 }
 
+// The rise's curvature: the force at 0.6 t1 against the parabola F(t1) (t/t1)^2, with t counted from the
+// stroke's start t0 (GestureStart; 0 where it is not known).
 std::optional<double> creepIndex(const std::vector<double>& force, const lab::FirstSlip& slip,
-                                 const FeatureContext& c)
+                                 const FeatureContext& c, double t0)
 {
     const std::vector<double> x =
         c.highpassHz > 0.0 ? lab::undoFirstOrderHighPass(force, c.highpassHz, c.sampleRate) : force;
-    const double t1 = slip.firstSlipTime;
+    const double t1 = slip.firstSlipTime - t0;
+    if (!(t1 > 0.0))
+        return std::nullopt;
     const auto from =
-        static_cast<std::size_t>(std::max(0.0, (kCreepPoint - kCreepWindow) * t1 * c.sampleRate));
-    const auto to = static_cast<std::size_t>((kCreepPoint + kCreepWindow) * t1 * c.sampleRate);
+        static_cast<std::size_t>(std::max(0.0, (t0 + (kCreepPoint - kCreepWindow) * t1) * c.sampleRate));
+    const auto to =
+        static_cast<std::size_t>(std::max(0.0, (t0 + (kCreepPoint + kCreepWindow) * t1) * c.sampleRate));
     if (to <= from + 2 || to >= x.size() || !(slip.forceAtSlip > 0.0))
         return std::nullopt;
     double sum = 0.0;
@@ -54,6 +60,20 @@ std::optional<double> creepIndex(const std::vector<double>& force, const lab::Fi
         return std::nullopt;
     return 1.0 - mean / (kCreepPoint * kCreepPoint * slip.forceAtSlip);
 }
+// When the stroke started in the record, s: from the recorded bow velocity where it tells (an acquisition's
+// start latency differs from trial to trial), else the record's time zero.
+double strokeStart(const FeatureContext& c, const ContactSignals& contact)
+{
+    const auto* a = std::get_if<ConstantAcceleration>(&c.gesture);
+    if (!a || !contact.bowVelocity)
+        return 0.0;
+    lab::GestureStartOptions o;
+    o.sampleRate = c.sampleRate;
+    o.acceleration = a->acceleration;
+    o.noiseRms = c.noiseRms;
+    return lab::gestureStartFromBowVelocity(*contact.bowVelocity, o).value_or(0.0);
+}
+
 // The bow's velocity over the trial: recorded, or the gesture's nominal one.
 std::vector<double> bowVelocityOf(std::size_t frames, const FeatureContext& c, const ContactSignals& contact)
 {
@@ -168,8 +188,9 @@ TrialFeatures computeTrialFeatures(const std::vector<double>& force, const Featu
         {
             f[kStaticFriction] = slip.muStatic;
             f[kJump] = slip.jump;
-            f[kFirstSlipTime] = slip.firstSlipTime;
-            f[kCreep] = creepIndex(force, slip, c);
+            const double t0 = strokeStart(c, contact);
+            f[kFirstSlipTime] = slip.firstSlipTime - t0;
+            f[kCreep] = creepIndex(force, slip, c, t0);
             const auto onsets = lab::slipOnsetsFromBridgeForce(force, periodSamples, onsetOptions);
             lab::TransientOptions t;
             t.capPeriods = kTransientCap;
