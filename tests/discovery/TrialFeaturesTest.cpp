@@ -6,6 +6,9 @@
 
 #include "discovery/TrialSimulator.h"
 #include "discovery/discover/TrialFeatures.h"
+#include "lab/Regime.h"
+
+#include <cmath>
 
 using namespace rosin::discovery;
 
@@ -50,4 +53,36 @@ TEST(TrialFeatures, ALateRecordIsAlignedToTheStrokeByItsBowVelocity)
     EXPECT_NEAR(*aligned[kFirstSlipTime], *onTime[kFirstSlipTime], 2e-5);
     EXPECT_NEAR(*aligned[kCreep], *onTime[kCreep], 1e-3); // 1/5 of the creep index's resolution
     EXPECT_NEAR(*unaligned[kFirstSlipTime] - *onTime[kFirstSlipTime], delay / kFs, 2e-5);
+}
+
+// Ideal Helmholtz motion drives the bridge with a sawtooth of peak-to-peak 2 Z0 v_b / beta (the corner's
+// slope jump times T); a simulated steady note in Helmholtz motion keeps most of it: its helmholtzLevel
+// lies within a dB or two below 0 dB (the losses round the corner, the body takes a little), and its
+// pitch is a few cents flat, not a whole sample (5.8 cents) of quantisation.
+TEST(TrialFeatures, SteadyHelmholtzMotionHasTheIdealSawtoothLevel)
+{
+    TrialSimulator sim(SimulationModel{}, kFs);
+    TrialSettings t;
+    t.beta = 0.1;
+    t.bowForce = 0.5;
+    t.gesture = Steady{0.1};
+    t.seconds = 1.0;
+    const auto& samples = sim.run(t);
+    const auto force = channelSamples(samples, "bridgeForce");
+    FeatureContext c;
+    c.sampleRate = kFs;
+    c.beta = t.beta;
+    c.bowForce = t.bowForce;
+    c.gesture = t.gesture;
+    c.periodSeconds = sim.periodSeconds();
+    c.impedance =
+        std::sqrt(SimulationModel{}.preset.string.tension * SimulationModel{}.preset.string.massPerLength);
+    const auto f = computeTrialFeatures(force, c);
+    ASSERT_TRUE(f[kRegime].has_value());
+    ASSERT_EQ(*f[kRegime], static_cast<double>(rosin::lab::Regime::Helmholtz));
+    ASSERT_TRUE(f[kHelmholtzLevel] && f[kPitchCents]);
+    EXPECT_LT(*f[kHelmholtzLevel], 0.5);
+    EXPECT_GT(*f[kHelmholtzLevel], -2.0);
+    EXPECT_LT(*f[kPitchCents], 1.0); // flat or at pitch, never sharp by more than a cent
+    EXPECT_GT(*f[kPitchCents], -15.0);
 }

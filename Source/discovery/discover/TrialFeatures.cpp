@@ -8,6 +8,7 @@
 #include "lab/FirstSlip.h"
 #include "lab/GestureStart.h"
 #include "lab/HarmonicTilt.h"
+#include "lab/PeriodEstimate.h"
 #include "lab/RegimeClassifier.h"
 #include "lab/SlipOnsets.h"
 #include "lab/TransientLength.h"
@@ -90,6 +91,50 @@ std::vector<double> bowVelocityOf(std::size_t frames, const FeatureContext& c, c
     return v;
 }
 
+// The Helmholtz period's flattening in cents over [from, end of the force), to a fraction of a sample
+// (lab::refinedPeriod near the classifier's whole-sample period).
+std::optional<double> pitchCents(const std::vector<double>& force, std::size_t from,
+                                 const lab::RegimeAnalysis& r, double periodSamples)
+{
+    const auto period = lab::refinedPeriod(force, from, force.size(), r.measuredPeriod);
+    if (!period)
+        return std::nullopt;
+    return 1200.0 * std::log2(periodSamples / *period);
+}
+
+// The bridge force's rms about its linear trend over [from, end) against the ideal Helmholtz sawtooth's for
+// the window's mean bow speed (TrialFeatures.h), dB.
+std::optional<double> helmholtzLevel(const std::vector<double>& force, std::size_t from,
+                                     const FeatureContext& c, const ContactSignals& contact)
+{
+    const std::size_t end = force.size();
+    if (!(c.impedance > 0.0) || end < from + 16)
+        return std::nullopt;
+    const std::vector<double> vb = bowVelocityOf(end, c, contact);
+    const double n = static_cast<double>(end - from);
+    const double kMean = (static_cast<double>(from) + static_cast<double>(end - 1)) / 2.0;
+    double sf = 0.0, skf = 0.0, skk = 0.0, sv = 0.0;
+    for (std::size_t k = from; k < end; ++k)
+    {
+        const double u = static_cast<double>(k) - kMean;
+        sf += force[k];
+        skf += u * force[k];
+        skk += u * u;
+        sv += vb[k];
+    }
+    const double slope = skf / skk, mean = sf / n, meanSpeed = sv / n;
+    double ss = 0.0;
+    for (std::size_t k = from; k < end; ++k)
+    {
+        const double r = force[k] - mean - slope * (static_cast<double>(k) - kMean);
+        ss += r * r;
+    }
+    const double ideal = 2.0 * c.impedance * std::abs(meanSpeed) / (c.beta * std::sqrt(12.0));
+    if (!(ideal > 0.0) || !(ss > 0.0))
+        return std::nullopt;
+    return 10.0 * std::log10(ss / n / (ideal * ideal));
+}
+
 // Slip fraction and loop area over the Helmholtz window [from, end), where the contact was recorded.
 void addContactFeatures(TrialFeatures& f, std::size_t from, std::size_t frames, const FeatureContext& c,
                         const ContactSignals& contact)
@@ -106,16 +151,17 @@ void addContactFeatures(TrialFeatures& f, std::size_t from, std::size_t frames, 
 
 const char* featureName(std::size_t feature) noexcept
 {
-    static constexpr const char* names[] = {"staticFriction",   "jump",       "creep",        "firstSlipTime",
-                                            "transientPeriods", "pitchCents", "harmonicTilt", "slipFraction",
-                                            "loopArea",         "regime"};
+    static constexpr const char* names[] = {
+        "staticFriction",   "jump",       "creep",        "firstSlipTime",
+        "transientPeriods", "pitchCents", "harmonicTilt", "helmholtzLevel",
+        "slipFraction",     "loopArea",   "regime"};
     static_assert(std::size(names) == kFeatureCount, "one name per feature");
     return feature < kFeatureCount ? names[feature] : "?";
 }
 
 const char* featureUnit(std::size_t feature) noexcept
 {
-    static constexpr const char* units[] = {"", "", "", "s", "periods", "cents", "dB", "", "", ""};
+    static constexpr const char* units[] = {"", "", "", "s", "periods", "cents", "dB", "dB", "", "", ""};
     static_assert(std::size(units) == kFeatureCount, "one unit per feature");
     return feature < kFeatureCount ? units[feature] : "";
 }
@@ -134,6 +180,7 @@ double featureResolution(std::size_t feature, double sampleRate) noexcept
     case kTransientPeriods:
         return 0.5;
     case kHarmonicTilt:
+    case kHelmholtzLevel:
         return 0.2;
     case kSlipFraction:
         return 0.005;
@@ -146,8 +193,8 @@ double featureResolution(std::size_t feature, double sampleRate) noexcept
 
 bool describesHelmholtzMotion(std::size_t feature) noexcept
 {
-    return feature == kPitchCents || feature == kHarmonicTilt || feature == kSlipFraction ||
-           feature == kLoopArea;
+    return feature == kPitchCents || feature == kHarmonicTilt || feature == kHelmholtzLevel ||
+           feature == kSlipFraction || feature == kLoopArea;
 }
 
 bool isCategorical(std::size_t feature) noexcept
@@ -165,6 +212,7 @@ FeatureContext featureContext(const Dataset& dataset, const Trial& trial)
     c.periodSeconds = 1.0 / dataset.rig.string.fundamental();
     c.highpassHz = dataset.sensor.highpassHz.value_or(0.0);
     c.noiseRms = dataset.sensor.noiseRms.value_or(0.0);
+    c.impedance = std::sqrt(dataset.rig.string.tension * dataset.rig.string.massPerLength);
     return c;
 }
 
@@ -205,7 +253,7 @@ TrialFeatures computeTrialFeatures(const std::vector<double>& force, const Featu
                     force, periodSamples, lab::AnalysisWindow{regimeFrom, 0}, onsetOptions);
                 f[kRegime] = static_cast<double>(r.regime);
                 if (r.regime == lab::Regime::Helmholtz)
-                    f[kPitchCents] = r.pitchCents;
+                    f[kPitchCents] = pitchCents(force, regimeFrom, r, periodSamples);
             }
             if (tr.slipped && (tr.periods || !tr.insufficientData))
                 f[kTransientPeriods] = std::min(tr.periods.value_or(kTransientCap), kTransientCap);
@@ -226,8 +274,9 @@ TrialFeatures computeTrialFeatures(const std::vector<double>& force, const Featu
         f[kRegime] = static_cast<double>(r.regime);
         if (r.regime == lab::Regime::Helmholtz)
         {
-            f[kPitchCents] = r.pitchCents;
+            f[kPitchCents] = pitchCents(force, force.size() / 2, r, periodSamples);
             f[kHarmonicTilt] = tilt(force, force.size() / 2, c);
+            f[kHelmholtzLevel] = helmholtzLevel(force, force.size() / 2, c, contact);
             addContactFeatures(f, force.size() / 2, force.size(), c, contact);
         }
     }

@@ -14,7 +14,8 @@
 //   transientPeriods periods from t1 to lasting Helmholtz motion (lab::measureTransient on the force's slip
 //                    onsets), capped at 20 (the seed's "not reached" counts as 20)
 //   pitchCents       in Helmholtz motion: 1200 log2(P / P_m) over the regime's window (below), the
-//                    flattening of the Helmholtz period (lab::classifyFromBridgeForce)
+//                    flattening of the Helmholtz period (lab::classifyFromBridgeForce's period refined to a
+//                    fraction of a sample by lab::refinedPeriod: one sample is 5.8 cents at a cello D)
 //   harmonicTilt     in established Helmholtz motion (the last 40 % of the trial, after t_H + 2 P; the
 //                    second half of a steady one): harmonics 25-60 against 1-4 of the bridge force, dB
 //                    (lab::harmonicTiltDb): how round the Helmholtz corner is, i.e. the string's losses
@@ -22,6 +23,13 @@
 //                    the losses show while the bow stays on the string (no gesture of the format lets the
 //                    string ring freely). Read in any regime, it is as chaotic as the regime and hides the
 //                    losses: tried and dropped.
+//   helmholtzLevel   steady trials only, over the same window as harmonicTilt: the bridge force's rms about
+//                    its linear trend against the ideal Helmholtz sawtooth's, 2 Z0 v_b / (beta sqrt 12)
+//                    (Z0 = sqrt(T mu), v_b the bow's mean speed over the window), dB: how much of the bow's
+//                    drive the string's motion keeps (losses, rounded corners, a gauge's gain lower it). In
+//                    a constant-acceleration start the amplitude still lags the rising bow speed at the end
+//                    of the trial (-1 to -15 dB across a Guettler grid, as chaotic as the transient): tried
+//                    there and dropped.
 //   slipFraction     where the dataset records bowPointVelocity, over the same window as harmonicTilt: the
 //                    share of the time the string slips past the bow (lab::slipFraction; beta in ideal
 //                    Helmholtz motion, more as the corners round)
@@ -53,6 +61,7 @@ enum Feature : std::size_t
     kTransientPeriods,
     kPitchCents,
     kHarmonicTilt,
+    kHelmholtzLevel,
     kSlipFraction,
     kLoopArea,
     kRegime,
@@ -65,12 +74,14 @@ const char* featureName(std::size_t feature) noexcept;
 const char* featureUnit(std::size_t feature) noexcept;
 /// The smallest scatter a feature is credited with (its resolution), so a quantised or noise-free feature
 /// does not divide by zero: 0.002 (mu_s, jump), 0.005 (creep), 0.1 ms, 0.5 periods, 1 cent,
-/// 0.2 dB, 0.005 (slip fraction), 0.002 (loop area), 1
+/// 0.2 dB (tilt, level: a steady level is smooth over the grid, so its neighbours
+/// credit it with almost no scatter, while two string models that agree within their tolerances differ by
+/// 0.1-0.4 dB there; ours), 0.005 (slip fraction), 0.002 (loop area), 1
 /// (regime: a category).
 double featureResolution(std::size_t feature, double sampleRate) noexcept;
 
 /// True for the features measured only in established Helmholtz motion (pitchCents, harmonicTilt,
-/// slipFraction, loopArea).
+/// helmholtzLevel, slipFraction, loopArea).
 bool describesHelmholtzMotion(std::size_t feature) noexcept;
 
 /// True for a feature whose value names a category (the regime): compared as equal or not.
@@ -88,6 +99,7 @@ struct FeatureContext
     double periodSeconds = 0.0; ///< nominal P of the rig's string
     double highpassHz = 0.0;    ///< sensor high-pass to undo (0: none)
     double noiseRms = 0.0;      ///< sensor noise, N (the same threshold for measurement and simulation)
+    double impedance = 0.0;     ///< Z0 = sqrt(T mu) of the rig's string, kg/s (0: no helmholtzLevel)
 };
 
 /// The bowed point's own channels, where a dataset has them (nullptr where not).
