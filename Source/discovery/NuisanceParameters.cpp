@@ -16,6 +16,12 @@ NuisanceParameter factor(const char* name, double NuisanceValues::*value, double
             value};
 }
 
+NuisanceParameter chain(NuisanceParameter p)
+{
+    p.measurementChain = true;
+    return p;
+}
+
 std::vector<NuisanceParameter> makeParameters()
 {
     return {
@@ -26,19 +32,20 @@ std::vector<NuisanceParameter> makeParameters()
                "volumetric heat capacity of the rosin x this"),
         factor("tension", &NuisanceValues::tension, 0.98, 1.02, "string tension x this"),
         factor("stringLoss", &NuisanceValues::stringLoss, 0.83, 1.2, "every transverse loss factor x this"),
-        factor("sensorGain", &NuisanceValues::sensorGain, 0.97, 1.03, "force gauge sensitivity x this"),
+        chain(
+            factor("sensorGain", &NuisanceValues::sensorGain, 0.97, 1.03, "force gauge sensitivity x this")),
         {EffectParameter{.name = "sensorBandwidth",
                          .min = 0.2,
                          .max = 0.5,
                          .logarithmic = true,
                          .meaning = "the chain's low-pass corner / sample rate (0.5: none)"},
-         &NuisanceValues::sensorBandwidth},
+         &NuisanceValues::sensorBandwidth, true},
         {EffectParameter{.name = "sensorDelay",
                          .unit = "s",
                          .min = 0.0,
                          .max = 0.0015,
                          .meaning = "how late the force channels are after the gesture"},
-         &NuisanceValues::sensorDelay},
+         &NuisanceValues::sensorDelay, true},
     };
 }
 } // namespace

@@ -51,6 +51,9 @@ struct NuisanceParameter
 {
     EffectParameter prior;         ///< name, unit, range (min..max), log scale, meaning
     double NuisanceValues::*value; ///< where it is kept
+    /// The sensor's (gain, low-pass, lag) rather than the rig's physics: a linear chain after the string,
+    /// which cannot take the form of a friction effect, so an effect's fit may start from its calibration.
+    bool measurementChain = false;
     double nominal() const { return NuisanceValues{}.*value; }
 };
 

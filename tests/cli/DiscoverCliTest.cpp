@@ -75,9 +75,10 @@ void PrintTo(const HiddenEffect& h, std::ostream* os)
     *os << h.spec;
 }
 
-// The loss factor of the cello D string's 36th partial (the middle of the harmonic tilt's band) with the
-// extra-string-damping of `parameters` (lossScale, lossTerms) applied to the baseline.
-double lossAtTiltBand(const nlohmann::json& parameters)
+// The loss factor of the cello D string's partial n with the extra-string-damping of `parameters`
+// (lossScale, lossTerms) applied to the baseline: n = 1 where the transient and the pitch read the losses,
+// n = 36 the middle of the harmonic tilt's band.
+double lossAtPartial(const nlohmann::json& parameters, int n)
 {
     using namespace rosin::discovery;
     const Effect& effect = *findEffect("extra-string-damping");
@@ -88,7 +89,7 @@ double lossAtTiltBand(const nlohmann::json& parameters)
     SimulationModel model;
     applyEffect(effect, {parameters["lossScale"].get<double>(), choice}, model);
     const auto cfg = voiceConfig(model);
-    return cfg.lossScale * cfg.string.lossFactor(36, cfg.string.length, false);
+    return cfg.lossScale * cfg.string.lossFactor(n, cfg.string.length, false);
 }
 
 class DiscoverHiddenEffect : public DiscoverCli, public ::testing::WithParamInterface<HiddenEffect>
@@ -110,13 +111,18 @@ TEST_P(DiscoverHiddenEffect, IsNamedFirstAndAtLeastHalvesTheGap)
     EXPECT_GE(j["trialsSkipped"].get<int>(), 1);
     if (h.name == "extra-string-damping")
     {
-        // A family (issue 16 item 4): the fit may put the loss into the bending term alone, which the corner
-        // of the Helmholtz wave cannot tell from all terms; the signature is the loss where the tilt reads
-        // it.
-        const double fitted = lossAtTiltBand(j["steps"][0]["parameters"]);
-        const double hidden = lossAtTiltBand({{"lossScale", h.hidden}, {"lossTerms", "all"}});
-        EXPECT_GT(fitted, hidden / 1.5) << j["steps"][0]["parameters"].dump();
-        EXPECT_LT(fitted, hidden * 1.5) << j["steps"][0]["parameters"].dump();
+        // A family (issue 16 item 4): the fit may put the loss into the bending term alone (the tilt's band)
+        // or the internal one alone (the low partials), and an 8 x 8 scan cannot always tell which (seen:
+        // internal x 3.02 for all x 3, gap 0.226 -> 0); the signature is the loss where the features read it,
+        // so the fitted loss must match the hidden one within 1.5x at the fundamental or in the tilt's band.
+        const auto& fittedParameters = j["steps"][0]["parameters"];
+        const nlohmann::json hiddenParameters = {{"lossScale", h.hidden}, {"lossTerms", "all"}};
+        auto matches = [&](int n)
+        {
+            const double ratio = lossAtPartial(fittedParameters, n) / lossAtPartial(hiddenParameters, n);
+            return ratio > 1.0 / 1.5 && ratio < 1.5;
+        };
+        EXPECT_TRUE(matches(1) || matches(36)) << fittedParameters.dump();
     }
     else if (!h.parameter.empty())
     {

@@ -76,9 +76,9 @@ struct SearchResult
     SimulationModel model; ///< baseline + adopted effects
 };
 
-/// `baseline` is the calibrated baseline, `uncalibrated` its nuisance values before calibration (where the
-/// first step's effects are fitted from); `active` the nuisance parameters refitted with each effect
-/// (CalibrationResult::active).
+/// `baseline` is the calibrated baseline, `uncalibrated` its nuisance values before calibration: the first
+/// step's effects start there, except the measurement chain's parameters that are not `active` (those
+/// refitted with each effect: CalibrationResult::active), which start calibrated.
 SearchResult searchEffects(const SearchInputs& inputs, const SimulationModel& baseline,
                            const NuisanceValues& uncalibrated, const std::vector<std::size_t>& active);
 
