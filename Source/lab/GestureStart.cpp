@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "LineFit.h"
+
 namespace rosin::lab
 {
 
@@ -15,22 +17,11 @@ std::optional<double> gestureStartFromBowVelocity(const std::vector<double>& v, 
     const double n = static_cast<double>(v.size() - begin);
     if (o.noiseRms > 0.0 && 2.0 * o.noiseRms / (o.acceleration * std::sqrt(n)) > o.maxStandardError)
         return std::nullopt;
-    // Least-squares line v = p + q t over the window, with t centred for a well-conditioned sum.
-    const double tMean =
-        (static_cast<double>(begin) + static_cast<double>(v.size() - 1)) / 2.0 / o.sampleRate;
-    double sv = 0.0, stv = 0.0, stt = 0.0;
-    for (std::size_t k = begin; k < v.size(); ++k)
-    {
-        const double t = static_cast<double>(k) / o.sampleRate - tMean;
-        sv += v[k];
-        stv += t * v[k];
-        stt += t * t;
-    }
-    const double slope = stv / stt;
-    const double meanV = sv / n;
+    const LineFit line = fitLine(v, begin, v.size());
+    const double slope = line.slope * o.sampleRate; // m/s^2
     if (!(std::abs(slope - o.acceleration) <= o.slopeTolerance * o.acceleration))
         return std::nullopt;
-    const double t0 = tMean - meanV / slope;
+    const double t0 = (line.centre - line.mean / line.slope) / o.sampleRate;
     if (!(t0 > -o.maxStart && t0 < o.maxStart))
         return std::nullopt;
     return t0;

@@ -8,6 +8,7 @@
 #include "lab/FirstSlip.h"
 #include "lab/GestureStart.h"
 #include "lab/HarmonicTilt.h"
+#include "lab/LineFit.h"
 #include "lab/PeriodEstimate.h"
 #include "lab/RegimeClassifier.h"
 #include "lab/SlipOnsets.h"
@@ -111,24 +112,15 @@ std::optional<double> helmholtzLevel(const std::vector<double>& force, std::size
     if (!(c.impedance > 0.0) || end < from + 16)
         return std::nullopt;
     const std::vector<double> vb = bowVelocityOf(end, c, contact);
-    const double n = static_cast<double>(end - from);
-    const double kMean = (static_cast<double>(from) + static_cast<double>(end - 1)) / 2.0;
-    double sf = 0.0, skf = 0.0, skk = 0.0, sv = 0.0;
+    const lab::LineFit trend = lab::fitLine(force, from, end);
+    double ss = 0.0, sv = 0.0;
     for (std::size_t k = from; k < end; ++k)
     {
-        const double u = static_cast<double>(k) - kMean;
-        sf += force[k];
-        skf += u * force[k];
-        skk += u * u;
+        const double r = force[k] - trend.at(static_cast<double>(k));
+        ss += r * r;
         sv += vb[k];
     }
-    const double slope = skf / skk, mean = sf / n, meanSpeed = sv / n;
-    double ss = 0.0;
-    for (std::size_t k = from; k < end; ++k)
-    {
-        const double r = force[k] - mean - slope * (static_cast<double>(k) - kMean);
-        ss += r * r;
-    }
+    const double n = static_cast<double>(end - from), meanSpeed = sv / n;
     const double ideal = 2.0 * c.impedance * std::abs(meanSpeed) / (c.beta * std::sqrt(12.0));
     if (!(ideal > 0.0) || !(ss > 0.0))
         return std::nullopt;
