@@ -24,6 +24,30 @@ std::vector<double> nuisanceVector(const SimulationModel& model)
     return v;
 }
 
+namespace
+{
+// The objective's range over {here, prior min, prior max} of coordinate j, the others at `at`.
+double swingAt(ModelFit& fit, std::vector<double> at, std::size_t j, double here)
+{
+    const auto& prior = nuisanceParameters()[j].prior;
+    at[j] = prior.min;
+    const double atLow = fit.objective(at);
+    at[j] = prior.max;
+    const double atHigh = fit.objective(at);
+    return std::max({here, atLow, atHigh}) - std::min({here, atLow, atHigh});
+}
+
+// Indices 0..n-1 ordered by `key`, largest first (ties keep the catalog's order).
+std::vector<std::size_t> largestFirst(const std::vector<double>& key)
+{
+    std::vector<std::size_t> order(key.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&key](std::size_t a, std::size_t b) { return key[a] > key[b]; });
+    return order;
+}
+} // namespace
+
 CalibrationResult calibrate(const SearchInputs& in, const SimulationModel& model)
 {
     const auto& ps = nuisanceParameters();
@@ -41,24 +65,23 @@ CalibrationResult calibrate(const SearchInputs& in, const SimulationModel& model
         nuisanceVector(model));
     CalibrationResult r;
     r.objectiveBefore = fit.bestValue();
+    const std::vector<double> nominal = fit.best();
     for (std::size_t j = 0; j < ps.size(); ++j)
+        r.screening.push_back(swingAt(fit, nominal, j, r.objectiveBefore));
+    r.swing.assign(ps.size(), 0.0);
+    for (std::size_t j : largestFirst(r.screening))
     {
-        // The prior's ends: how much the data care about this one.
-        std::vector<double> low = fit.best(), high = fit.best();
-        low[j] = ps[j].prior.min, high[j] = ps[j].prior.max;
-        const double here = fit.bestValue(), atLow = fit.objective(low), atHigh = fit.objective(high);
-        r.swing.push_back(std::max({here, atLow, atHigh}) - std::min({here, atLow, atHigh}));
+        // The prior's ends from where the descent stands: how much the data care about this one there.
+        r.swing[j] = swingAt(fit, fit.best(), j, fit.bestValue());
         // One the data do not constrain stays where it is (nominal, or a prior end that was better).
-        if (r.swing.back() > kActiveSwing * here)
-            fit.golden(j, 0.5 * fit.span(j), 3);
+        if (r.swing[j] > kActiveSwing * fit.bestValue())
+            fit.golden(j, 0.5 * fit.span(j), 4);
     }
-    std::vector<std::size_t> order(ps.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(),
-              [&r](std::size_t a, std::size_t b) { return r.swing[a] > r.swing[b]; });
-    for (std::size_t j : order)
+    for (std::size_t j : largestFirst(r.swing))
         if (r.active.size() < kMaxActive && r.swing[j] > kActiveSwing * fit.bestValue())
             r.active.push_back(j);
+    for (std::size_t j : r.active)
+        fit.golden(j, 0.15 * fit.span(j), 3);
     std::vector<double> best = fit.best();
     for (std::size_t j = 0; j < ps.size(); ++j)
         if (best[j] != ps[j].nominal())

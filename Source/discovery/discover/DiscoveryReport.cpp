@@ -58,6 +58,7 @@ nlohmann::json calibrationJson(const Discovery& d)
                               {"baseline", d.calibration.values.*p.value},
                               {"final", d.finalNuisance.*p.value},
                               {"objectiveSwing", d.calibration.swing[j]},
+                              {"screeningSwing", d.calibration.screening[j]},
                               {"refittedWithEffects", active}});
     }
     return {{"parameters", parameters},
