@@ -32,6 +32,16 @@ sys.path.insert(0, os.path.dirname(SCRIPT))
 import plot_discovery  # noqa: E402
 
 
+def schelleng_maps():
+    """One bow speed, three betas, two forces: a Schelleng scan's grid."""
+    trials = [{"id": f"b{b}f{f}", "beta": beta, "force": force, "motion": 0.05,
+               "measured": {"pitchCents": 1.0 + b}, "baseline": {"pitchCents": 0.5 * b},
+               "calibrated": {"pitchCents": 0.8 * b}}
+              for b, beta in enumerate((0.02, 0.06, 0.18)) for f, force in enumerate((0.1, 1.0))]
+    return {"motionAxis": "bow speed (m/s)", "changed": [], "disagreeing": ["pitchCents"],
+            "units": {"pitchCents": "cents"}, "adoptedEffects": 0, "trials": trials}
+
+
 def synthetic_maps(adopted, disagreeing, changed):
     trials = []
     for i, force in enumerate((0.4, 0.8, 1.2)):
@@ -74,6 +84,23 @@ class PlotDiscoveryTest(unittest.TestCase):
             subprocess.run([sys.executable, SCRIPT, folder], check=True, capture_output=True)
             pngs = sorted(n for n in os.listdir(folder) if n.endswith(".png"))
             self.assertEqual(pngs, ["map-jump-b0.0899.png", "map-staticFriction-b0.0899.png"])
+
+    def test_a_schelleng_scan_is_drawn_over_beta_and_force_in_one_figure(self):
+        maps = schelleng_maps()
+        self.assertTrue(plot_discovery.is_schelleng(maps))
+        self.assertFalse(plot_discovery.is_schelleng(synthetic_maps(0, ["jump"], [])))
+        fig = plot_discovery.draw(maps, "pitchCents")
+        panels = [ax for ax in fig.axes if ax.get_title()]
+        for ax in panels:
+            self.assertEqual(ax.get_xlabel(), "relative bow position beta (dimensionless)")
+            self.assertEqual([t.get_text() for t in ax.get_xticklabels()], ["0.02", "0.06", "0.18"])
+        self.assertEqual(fig._suptitle.get_text(), "pitchCents at bow speed 0.05 m/s")
+        plt.close(fig)
+        with tempfile.TemporaryDirectory() as folder:
+            with open(os.path.join(folder, "maps.json"), "w") as f:
+                json.dump(maps, f)
+            subprocess.run([sys.executable, SCRIPT, folder], check=True, capture_output=True)
+            self.assertEqual(sorted(n for n in os.listdir(folder) if n.endswith(".png")), ["map-pitchCents.png"])
 
     def test_a_feature_no_trial_has_draws_nothing(self):
         self.assertIsNone(plot_discovery.draw(synthetic_maps(0, ["firstSlipTime"], []), "firstSlipTime", 0.0899))

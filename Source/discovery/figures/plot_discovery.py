@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Side-by-side maps for `rosin discover`: measured / baseline / baseline + calibration (/ + adopted
-effects, when any was adopted) of every feature that disagrees before any effect or that an adopted effect changed, one figure per
-feature and beta, over the (bow force, acceleration or bow speed) grid. Both axes and the colour scale carry
-their quantity and unit.
+effects, when any was adopted) of every feature that disagrees before any effect or that an adopted effect
+changed. A Guettler scan gets one figure per feature and beta over its (bow force, acceleration) grid; a
+Schelleng scan (one bow speed, several betas) one figure per feature over (bow force, beta), the plane of its
+diagram. Both axes and the colour scale carry their quantity and unit.
 
 Usage: plot_discovery.py DIR      reads DIR/maps.json (written by rosin discover), writes DIR/map-*.png
 """
@@ -38,22 +39,36 @@ def feature_label(maps, name):
     return f"{name} ({unit})" if unit else f"{name} (dimensionless)"
 
 
-def draw(maps, name, beta):
-    """One feature at one beta; returns the figure, or None when no trial has the feature there."""
+def is_schelleng(maps):
+    """One bow speed and several betas: the scan's plane is (beta, bow force)."""
+    trials = maps["trials"]
+    return len({t["motion"] for t in trials}) == 1 and len({t["beta"] for t in trials}) > 1
+
+
+def draw(maps, name, beta=None):
+    """One feature at one beta over (motion, force), or, with beta None, over (beta, force) at the scan's one
+    bow speed; returns the figure, or None when no trial has the feature there."""
     import matplotlib.pyplot as plt
     import numpy as np
 
     trials = maps["trials"]
+    if beta is None:
+        x_key, x_label = "beta", "relative bow position beta (dimensionless)"
+        quantity, _, unit = maps["motionAxis"].partition(" (")
+        title = f"{name} at {quantity} {trials[0]['motion']:g} {unit.rstrip(')')}".rstrip()
+    else:
+        trials = [t for t in trials if t["beta"] == beta]
+        x_key, x_label, title = "motion", maps["motionAxis"], f"{name} at beta {beta:g}"
     forces = sorted({t["force"] for t in trials})
-    motions = sorted({t["motion"] for t in trials})
+    xs = sorted({t[x_key] for t in trials})
     panels = ["measured", "baseline"] + (["calibrated"] if "calibrated" in trials[0] else []) + (
         ["final"] if maps.get("adoptedEffects", 0) > 0 else [])
     grids = {}
     for key in panels:
-        g = np.full((len(forces), len(motions)), np.nan)
+        g = np.full((len(forces), len(xs)), np.nan)
         for t in trials:
-            if t["beta"] == beta and t[key].get(name) is not None:
-                g[forces.index(t["force"]), motions.index(t["motion"])] = t[key][name]
+            if t[key].get(name) is not None:
+                g[forces.index(t["force"]), xs.index(t[x_key])] = t[key][name]
         grids[key] = g
     finite = np.concatenate([g[np.isfinite(g)] for g in grids.values()])
     if finite.size == 0:
@@ -65,17 +80,17 @@ def draw(maps, name, beta):
               "final": "calibrated + adopted effect(s)"}
     mesh = None
     for ax, key in zip(axes, panels):
-        mesh = ax.pcolormesh(range(len(motions) + 1), range(len(forces) + 1), grids[key], vmin=lo, vmax=hi,
+        mesh = ax.pcolormesh(range(len(xs) + 1), range(len(forces) + 1), grids[key], vmin=lo, vmax=hi,
                              cmap="viridis", shading="flat")
         ax.set_title(titles[key])
-        ax.set_xticks([i + 0.5 for i in range(len(motions))])
-        ax.set_xticklabels([f"{m:.3g}" for m in motions], rotation=60, fontsize=7)
-        ax.set_xlabel(maps["motionAxis"])
+        ax.set_xticks([i + 0.5 for i in range(len(xs))])
+        ax.set_xticklabels([f"{x:.3g}" for x in xs], rotation=60, fontsize=7)
+        ax.set_xlabel(x_label)
     axes[0].set_yticks([i + 0.5 for i in range(len(forces))])
     axes[0].set_yticklabels([f"{v:.3g}" for v in forces], fontsize=7)
     axes[0].set_ylabel("bow force (N)")
     fig.colorbar(mesh, ax=list(axes), label=feature_label(maps, name))
-    fig.suptitle(f"{name} at beta {beta:g}")
+    fig.suptitle(title)
     return fig
 
 
@@ -88,17 +103,16 @@ def main():
     folder = sys.argv[1]
     with open(os.path.join(folder, "maps.json")) as f:
         maps = json.load(f)
-    betas = sorted({t["beta"] for t in maps["trials"]})
+    betas = [None] if is_schelleng(maps) else sorted({t["beta"] for t in maps["trials"]})
     for name in mapped_features(maps):
         for beta in betas:
             fig = draw(maps, name, beta)
             if fig is None:
                 continue
-            out = os.path.join(folder, f"map-{name}-b{beta:g}.png")
+            out = os.path.join(folder, f"map-{name}.png" if beta is None else f"map-{name}-b{beta:g}.png")
             fig.savefig(out, dpi=90)
             plt.close(fig)
             print("wrote", out)
-
 
 if __name__ == "__main__":
     main()
