@@ -266,12 +266,21 @@ RegimeAnalysis classifyFromVoice(const std::vector<physics::VoiceSample>& sample
 RegimeAnalysis classifyFromBridgeForce(const std::vector<double>& bridgeForce, double periodSamples,
                                        AnalysisWindow window, const ForceOnsetOptions& options)
 {
+    if (windowEnd(window, bridgeForce.size()) <= window.begin)
+        return {};
+    return classifyFromForceOnsets(slipOnsetsFromBridgeForce(bridgeForce, periodSamples, options),
+                                   bridgeForce, periodSamples, window);
+}
+
+RegimeAnalysis classifyFromForceOnsets(const std::vector<std::size_t>& allOnsets,
+                                       const std::vector<double>& bridgeForce, double periodSamples,
+                                       AnalysisWindow window)
+{
     RegimeAnalysis r;
     const std::size_t end = windowEnd(window, bridgeForce.size());
     if (end <= window.begin)
         return r;
-    const auto onsets =
-        inWindow(slipOnsetsFromBridgeForce(bridgeForce, periodSamples, options), window.begin, end);
+    const auto onsets = inWindow(allOnsets, window.begin, end);
     if (onsets.empty())
     {
         double rise = 0.0, residual = 0.0;

@@ -107,6 +107,11 @@ RegimeAnalysis classifyFromEpisodes(const std::vector<SlipEpisode>& episodes, do
 /// says raucous where the state sees double or multiple slipping.
 RegimeAnalysis classifyFromBridgeForce(const std::vector<double>& bridgeForce, double periodSamples,
                                        AnalysisWindow window = {}, const ForceOnsetOptions& options = {});
+/// The same from the onsets slipOnsetsFromBridgeForce found over the whole signal (for a caller that also
+/// needs them for the transient: the onset search is the analysis' costliest step).
+RegimeAnalysis classifyFromForceOnsets(const std::vector<std::size_t>& onsets,
+                                       const std::vector<double>& bridgeForce, double periodSamples,
+                                       AnalysisWindow window = {});
 
 /// Sawtoothness s = |F1| / (2 |F2|) of x over [begin, end) at period periodSamples (Hann-windowed
 /// projection on whole cycles, mean removed): 1 for an ideal sawtooth. NaN if fewer than 2 cycles fit.

@@ -241,8 +241,8 @@ TrialFeatures computeTrialFeatures(const std::vector<double>& force, const Featu
                 std::max(settledRegime, (1.0 - kTiltShare) * static_cast<double>(force.size())));
             if (regimeFrom + 4 * static_cast<std::size_t>(periodSamples) < force.size())
             {
-                const lab::RegimeAnalysis r = lab::classifyFromBridgeForce(
-                    force, periodSamples, lab::AnalysisWindow{regimeFrom, 0}, onsetOptions);
+                const lab::RegimeAnalysis r = lab::classifyFromForceOnsets(
+                    onsets, force, periodSamples, lab::AnalysisWindow{regimeFrom, 0});
                 f[kRegime] = static_cast<double>(r.regime);
                 if (r.regime == lab::Regime::Helmholtz)
                     f[kPitchCents] = pitchCents(force, regimeFrom, r, periodSamples);
