@@ -31,7 +31,6 @@ void hertzContact(SimulationModel& m, const std::vector<double>&)
 void stickingCreep(SimulationModel& m, const std::vector<double>& v)
 {
     m.frictionEffects.creepResistance = v[0];
-    m.frictionEffects.creepThreshold = v[1];
 }
 
 // Multiplies, so the effect adds to whatever loss the baseline already has: every term of the loss law, or
@@ -107,15 +106,6 @@ std::vector<Effect> makeCatalog()
                                           .drawMax = 150.0,
                                           .logarithmic = true,
                                           .meaning = "dashpot in series with the sticking contact"};
-    // Creep with or without a threshold (a Bingham layer that holds below a share of its static limit);
-    // Rosin's own synth-data draws none.
-    const EffectParameter creepThreshold{.name = "creepThreshold",
-                                         .min = 0.0,
-                                         .max = 0.8,
-                                         .drawMin = 0.0,
-                                         .drawMax = 0.0,
-                                         .meaning = "share of the static limit below which the contact holds "
-                                                    "rigidly (0: creeps at any force)"};
     const EffectParameter lossScale{.name = "lossScale",
                                     .min = 1.0,
                                     .max = 10.0,
@@ -150,7 +140,7 @@ std::vector<Effect> makeCatalog()
         {"sticking-creep",
          "viscous-like creep during nominal sticking",
          "seed 001 section 5.3",
-         {creepResistance, creepThreshold},
+         {creepResistance},
          stickingCreep},
         {"extra-string-damping",
          "string losses higher than the nominal loss law",

@@ -48,7 +48,7 @@ TEST(EffectCatalog, ParametersHaveNamesUnitsAndRanges)
         {"junction-growth", {"growth", "onsetTime", "ageingForm"}},
         {"breakaway-jump", {"jumpCurve"}},
         {"hertz-contact", {}},
-        {"sticking-creep", {"creepResistance", "creepThreshold"}},
+        {"sticking-creep", {"creepResistance"}},
         {"extra-string-damping", {"lossScale", "lossTerms"}},
         {"ambient-temperature", {"ambientOffset"}}};
     std::set<std::string> all;
@@ -128,9 +128,8 @@ TEST(EffectCatalog, HertzContactChangesTheContactScaling)
 TEST(EffectCatalog, StickingCreepPutsADashpotInTheStuckContact)
 {
     const double eta = 60.0;
-    const SimulationModel model = withEffect("sticking-creep", {eta, 0.0});
+    const SimulationModel model = withEffect("sticking-creep", {eta});
     EXPECT_DOUBLE_EQ(model.frictionEffects.creepResistance, eta);
-    EXPECT_DOUBLE_EQ(withEffect("sticking-creep", {eta, 0.4}).frictionEffects.creepThreshold, 0.4);
     auto law = frictionLaw(model);
     law->prepare(kFs);
     const double slope = 1.1, dvh = -0.01;
@@ -190,7 +189,7 @@ TEST(EffectCatalog, OutOfRangeValuesAreRefusedByName)
     }
     EXPECT_THROW(applyEffect(growth, {0.2}, model), std::invalid_argument);
     EXPECT_THROW(applyEffect(*findEffect("breakaway-jump"), {0.5}, model), std::invalid_argument);
-    EXPECT_THROW(applyEffect(*findEffect("sticking-creep"), {NAN, 0.0}, model), std::invalid_argument);
+    EXPECT_THROW(applyEffect(*findEffect("sticking-creep"), {NAN}, model), std::invalid_argument);
     EXPECT_DOUBLE_EQ(model.frictionEffects.junctionGrowth, 0.0); // nothing applied
 }
 

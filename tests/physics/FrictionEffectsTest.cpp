@@ -101,35 +101,6 @@ TEST(StickingCreep, FollowsTheDashpotWhileStuckAndTheLawWhileSliding)
     EXPECT_DOUBLE_EQ(sliding.frictionForce, reference.frictionForce);
 }
 
-// With a threshold the layer is a Bingham solid: rigid while the force it carries stays below share * mu_s
-// Fb, beyond it the threshold plus the dashpot, on the load line, and continuous where the two meet.
-TEST(StickingCreep, AThresholdHoldsRigidlyBelowItAndAddsTheDashpotAbove)
-{
-    const double eta = 50.0, L = 1.2, N = 1.0, share = 0.5;
-    auto reference = classical();
-    reference->prepare(kFs);
-    const double limit = share * reference->staticCoefficient(N) * N; // 0.5 * 1.2 N
-    auto solve = [&](double dvh)
-    {
-        StickingCreepLaw law(classical(), eta, share);
-        law.prepare(kFs);
-        return law.solve({dvh, L, N});
-    };
-    const auto below = solve(-0.9 * limit / L);
-    EXPECT_TRUE(below.sticking);
-    EXPECT_EQ(below.dv, 0.0);
-    EXPECT_NEAR(below.frictionForce, 0.9 * limit, 1e-12); // the rigid-sticking force
-    const auto above = solve(-1.5 * limit / L);
-    EXPECT_TRUE(above.sticking);
-    EXPECT_LT(above.dv, 0.0);                                                  // creeping behind the bow
-    EXPECT_NEAR(above.frictionForce, limit + eta * std::abs(above.dv), 1e-12); // Bingham: F_th + eta |dv|
-    EXPECT_NEAR(above.frictionForce, L * (above.dv + 1.5 * limit / L), 1e-12); // on the load line
-    const auto at = solve(-limit / L);
-    EXPECT_NEAR(at.dv, 0.0, 1e-15);
-    EXPECT_NEAR(at.frictionForce, limit, 1e-12);
-    EXPECT_THROW(StickingCreepLaw(classical(), eta, 1.0), std::invalid_argument);
-}
-
 TEST(StickingCreep, PreSlipRiseIsASpringDraggedThroughADashpot)
 {
     // Ideal string (no torsion, no bending stiffness, rigid bridge), Guettler's gesture v_b = a t.

@@ -13,8 +13,7 @@ std::unique_ptr<FrictionLaw> withEffects(std::unique_ptr<FrictionLaw> law, const
             std::move(law), effects.junctionGrowth, effects.junctionGrowthTime,
             effects.junctionGrowthSaturates ? AgeingForm::Saturating : AgeingForm::Logarithmic);
     if (effects.creepResistance > 0.0)
-        law = std::make_unique<StickingCreepLaw>(std::move(law), effects.creepResistance,
-                                                 effects.creepThreshold);
+        law = std::make_unique<StickingCreepLaw>(std::move(law), effects.creepResistance);
     return law;
 }
 

@@ -15,7 +15,6 @@ struct FrictionEffects
     double junctionGrowthTime = 0.005;    ///< s, tau_c: hold time at which ageing sets in
     double creepResistance = 0.0;         ///< StickingCreepLaw: eta in N s/m; 0 = no creep
     bool junctionGrowthSaturates = false; ///< JunctionGrowthLaw's AgeingForm::Saturating instead of log
-    double creepThreshold = 0.0;          ///< StickingCreepLaw: F_th over the static limit; 0 = none
 
     bool any() const noexcept { return junctionGrowth > 0.0 || creepResistance > 0.0; }
 };

@@ -9,11 +9,6 @@
 // f / eta. Sliding samples are the wrapped law's own. eta -> infinity recovers the wrapped law. The wrapped
 // law's state (temperature, hysteresis flag) advances with its own sticking solution: the heat of creep,
 // f^2 / eta, is neglected (it is ~1e-3 of the sliding power at the creep speeds that matter).
-// With a threshold (issue 16 item 4: creep with or without one), the layer yields like a Bingham solid: it
-// holds rigidly while the force it must carry stays below F_th = share * mu_s(Fb) Fb (the share of the
-// wrapped law's present static limit) and creeps beyond it with f = -sgn(dv) (F_th + eta |dv|), so
-//     dv = sgn(dvh) max(0, 2Z |dvh| - F_th) / (2Z + eta),    f = 2Z (dv - dvh);
-// share 0 is the plain dashpot above, and the two branches meet at the threshold (no jump in force).
 #include <memory>
 
 #include "FrictionLaw.h"
@@ -24,9 +19,8 @@ namespace rosin::physics
 class StickingCreepLaw final : public FrictionLaw
 {
   public:
-    /// eta: creep resistance of the sticking contact, N s/m, > 0; thresholdShare: F_th over the static limit,
-    /// 0 <= share < 1 (0: creeps at any force).
-    StickingCreepLaw(std::unique_ptr<FrictionLaw> inner, double eta, double thresholdShare = 0.0);
+    /// eta: creep resistance of the sticking contact, N s/m, > 0.
+    StickingCreepLaw(std::unique_ptr<FrictionLaw> inner, double eta);
 
     void prepare(double sampleRate) override { inner_->prepare(sampleRate); }
     void reset() noexcept override { inner_->reset(); }
@@ -39,12 +33,10 @@ class StickingCreepLaw final : public FrictionLaw
     const char* name() const noexcept override { return inner_->name(); }
 
     double resistance() const noexcept { return eta_; }
-    double thresholdShare() const noexcept { return share_; }
 
   private:
     std::unique_ptr<FrictionLaw> inner_;
     double eta_;
-    double share_;
 };
 
 } // namespace rosin::physics
