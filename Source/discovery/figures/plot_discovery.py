@@ -114,5 +114,6 @@ def main():
             plt.close(fig)
             print("wrote", out)
 
+
 if __name__ == "__main__":
     main()
