@@ -38,8 +38,13 @@ TEST(GapMeasure, AFeatureSeenOnOneSideCountsAsThreeSigma)
     EXPECT_DOUBLE_EQ(*normalisedDifference(kJump, 0.0, 10.0, 1.0), -10.0);
     EXPECT_DOUBLE_EQ(*normalisedDifference(kJump, 1.5, 0.5, 0.5), 2.0);
     EXPECT_DOUBLE_EQ(*normalisedDifference(kJump, 1.0, std::nullopt, 1.0), kMissingZ);
-    // Helmholtz-motion features are compared only where both sides show them.
+    // Helmholtz-motion features: the reported gap compares them only where both sides show them; a fit
+    // compares them where the measurement shows them, a model that misses the motion there 3 sigma off.
     EXPECT_FALSE(normalisedDifference(kHarmonicTilt, -20.0, std::nullopt, 1.0));
+    const auto fitSide = HelmholtzTrials::MeasuredSide;
+    EXPECT_DOUBLE_EQ(*normalisedDifference(kHarmonicTilt, -20.0, std::nullopt, 1.0, fitSide), kMissingZ);
+    EXPECT_FALSE(normalisedDifference(kHarmonicTilt, std::nullopt, -20.0, 1.0, fitSide));
+    EXPECT_DOUBLE_EQ(*normalisedDifference(kJump, 1.0, std::nullopt, 1.0, fitSide), kMissingZ);
     EXPECT_FALSE(normalisedDifference(kJump, 1.0, 0.0, std::numeric_limits<double>::quiet_NaN()));
 }
 
@@ -99,7 +104,7 @@ TEST(GapMeasure, TrialSharesAddUpToTheObjective)
         measured.push_back(m), simulated.push_back(s), trials.push_back(t);
     }
     const auto scatter = unitScatter(12);
-    const auto g = measureGap(trials, measured, simulated, scatter);
+    const auto g = fitGap(trials, measured, simulated, scatter);
     const auto shares = objectiveShares(trials, measured, simulated, scatter);
     double sum = 0.0;
     for (double x : shares)
@@ -112,6 +117,32 @@ TEST(GapMeasure, TrialSharesAddUpToTheObjective)
 
 // The null mean of the loss by a second method (Monte Carlo, 200000 normal draws: standard error 0.002), and
 // a right model's gap near 0 while a model 2 sigma off everywhere is clearly not.
+// The loophole the measured side closes: a candidate that loses the Helmholtz motion in the trials where its
+// pitch was 10 sigma off must not fit better than the model that kept the motion there, while the reported
+// gap (both sides) would call it better.
+TEST(GapMeasure, AFitGainsNothingByLosingTheMotionWhereItWasWrong)
+{
+    std::vector<TrialFeatures> measured(8), kept(8), lost(8);
+    std::vector<std::size_t> trials;
+    for (std::size_t t = 0; t < 8; ++t)
+    {
+        measured[t][kPitchCents] = -10.0;
+        kept[t][kPitchCents] = lost[t][kPitchCents] = t < 4 ? -10.2 : 0.0; // 10 sigma off in trials 4-7
+        if (t >= 4)
+            lost[t][kPitchCents].reset();
+        trials.push_back(t);
+    }
+    const auto scatter = unitScatter(8);
+    EXPECT_LT(measureGap(trials, measured, lost, scatter).objective,
+              measureGap(trials, measured, kept, scatter).objective);
+    const auto lostFit = fitGap(trials, measured, lost, scatter, kept);
+    EXPECT_GE(lostFit.objective, fitGap(trials, measured, kept, scatter).objective);
+    EXPECT_EQ(lostFit.count[kPitchCents], 8u);
+    // Against a reference that also misses them, a lost trial costs 3 sigma.
+    EXPECT_NEAR(fitGap(trials, measured, lost, scatter, lost).meanLoss[kPitchCents],
+                (4.0 * robustLoss(0.2) + 4.0 * robustLoss(kMissingZ)) / 8.0, 1e-12);
+}
+
 TEST(GapMeasure, StudentLossNullMeanAndGapOfARightModel)
 {
     std::mt19937_64 random(17);

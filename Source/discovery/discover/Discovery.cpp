@@ -47,6 +47,7 @@ Discovery runDiscovery(const Dataset& dataset, std::vector<TrialFeatures> measur
     in.threads = settings.threads;
     in.seed = settings.seed;
     in.log = settings.log;
+    in.reference = d.baseline;
     d.calibration = calibrate(in, base);
     SimulationModel calibrated = base;
     calibrated.nuisance = d.calibration.values;

@@ -140,6 +140,15 @@ nlohmann::json discoveryMaps(const Discovery& d, const Dataset& dataset)
             o[featureName(f)] = t[f] ? nlohmann::json(*t[f]) : nlohmann::json(nullptr);
         return o;
     };
+    // The unit of each z: the measurement's scatter with the model's sensitivity (null: not compared).
+    auto sigmas = [&](std::size_t t)
+    {
+        TrialFeatures s;
+        for (std::size_t f = 0; f < kFeatureCount; ++f)
+            if (const double sigma = d.scatter.trialSigma(t, f); !std::isnan(sigma))
+                s[f] = sigma;
+        return values(s);
+    };
     for (const auto& cell : d.grid.cells)
         for (std::size_t t : cell.trials)
             trials.push_back({{"id", dataset.trials[t].id},
@@ -149,7 +158,8 @@ nlohmann::json discoveryMaps(const Discovery& d, const Dataset& dataset)
                               {"measured", values(d.measured[t])},
                               {"baseline", values(d.baseline[t])},
                               {"calibrated", values(d.calibrated[t])},
-                              {"final", values(d.final[t])}});
+                              {"final", values(d.final[t])},
+                              {"sigma", sigmas(t)}});
     // Maps are drawn for every feature that disagrees before any effect (whatever the verdict: a failure
     // needs its picture most) and for every feature an adopted effect changed.
     constexpr double kMappedGap = 0.2;

@@ -76,8 +76,8 @@ ModelFit fitEffect(const SearchInputs& in, const SimulationModel& start, double 
 
 // What a candidate is compared with (the current model: the calibrated baseline with the effects adopted so
 // far) and what it is fitted from (the same structure with the nuisance values the last adopted step chose;
-// at first the stated ones, the measurement chain's calibrated: searchEffects): an effect is fitted from where
-// the physics is as stated, not from a calibration that may already have bent the parameters that could
+// at first the stated ones, the measurement chain's calibrated: searchEffects): an effect is fitted from
+// where the physics is as stated, not from a calibration that may already have bent the parameters that could
 // mimic it; its own joint calibration then starts there too.
 struct CurrentModel
 {
@@ -110,10 +110,10 @@ EffectScore score(const SearchInputs& in, const CurrentModel& current, const std
     applyEffect(effect, s.values, m);
     s.nuisance = m.nuisance;
     const auto sim = simulateFeatures(m, *in.dataset, in.heldOut, in.seconds, in.threads);
-    s.heldOutBefore = measureGap(in.heldOut, in.measured, current.heldOut, in.scatter);
-    s.heldOutAfter = measureGap(in.heldOut, in.measured, sim, in.scatter);
+    s.heldOutBefore = fitGap(in.heldOut, in.measured, current.heldOut, in.scatter);
+    s.heldOutAfter = fitGap(in.heldOut, in.measured, sim, in.scatter, current.heldOut);
     const auto e0 = objectiveShares(in.heldOut, in.measured, current.heldOut, in.scatter);
-    const auto e1 = objectiveShares(in.heldOut, in.measured, sim, in.scatter);
+    const auto e1 = objectiveShares(in.heldOut, in.measured, sim, in.scatter, current.heldOut);
     std::vector<double> d;
     double before = 0.0, after = 0.0;
     for (std::size_t i = 0; i < e0.size(); ++i)
@@ -159,8 +159,13 @@ SearchResult searchEffects(const SearchInputs& in, const SimulationModel& baseli
         remaining.push_back(&e);
     while (result.steps.size() < kMaxEffects && !remaining.empty())
     {
-        const auto currentHeldOut =
-            simulateFeatures(result.model, *in.dataset, in.heldOut, in.seconds, in.threads);
+        // The current model on every trial: the held-out half scores the candidates, and a candidate's fit
+        // on the training half is compared with it (SearchInputs::reference).
+        SearchInputs stepIn = in;
+        std::vector<std::size_t> used = in.training;
+        used.insert(used.end(), in.heldOut.begin(), in.heldOut.end());
+        stepIn.reference = simulateFeatures(result.model, *in.dataset, used, in.seconds, in.threads);
+        const auto& currentHeldOut = stepIn.reference;
         // After an adopted effect: nothing left to explain when the held-out gap is within the scatter.
         if (!result.steps.empty() &&
             measureGap(in.heldOut, in.measured, currentHeldOut, in.scatter).overall <= 0.0)
@@ -169,14 +174,15 @@ SearchResult searchEffects(const SearchInputs& in, const SimulationModel& baseli
         SimulationModel start = result.model;
         start.nuisance = startNuisance;
         const double startObjective =
-            measureGap(in.training, in.measured,
-                       simulateFeatures(start, *in.dataset, in.training, in.seconds, in.threads), in.scatter)
+            fitGap(in.training, in.measured,
+                   simulateFeatures(start, *in.dataset, in.training, in.seconds, in.threads), in.scatter,
+                   stepIn.reference)
                 .objective;
         std::vector<EffectScore> tried;
         for (const Effect* e : remaining)
         {
             tried.push_back(
-                score(in, {result.model, currentHeldOut, start, startObjective}, active, *e, alpha));
+                score(stepIn, {result.model, currentHeldOut, start, startObjective}, active, *e, alpha));
             if (in.log)
             {
                 const auto& s = tried.back();

@@ -33,9 +33,11 @@ double nullLoss() noexcept
 }
 
 std::optional<double> normalisedDifference(std::size_t feature, const std::optional<double>& measured,
-                                           const std::optional<double>& simulated, double sigma)
+                                           const std::optional<double>& simulated, double sigma,
+                                           HelmholtzTrials trials)
 {
-    if (std::isnan(sigma) || ((!measured || !simulated) && describesHelmholtzMotion(feature)))
+    const bool unseen = !measured || (trials == HelmholtzTrials::BothSides && !simulated);
+    if (std::isnan(sigma) || (unseen && describesHelmholtzMotion(feature)))
         return std::nullopt;
     if (measured && simulated && isCategorical(feature))
         return *measured == *simulated ? 0.0 : std::min(kMissingZ, 1.0 / std::sqrt(sigma));
@@ -48,16 +50,41 @@ std::optional<double> normalisedDifference(std::size_t feature, const std::optio
     return std::nullopt;
 }
 
+namespace
+{
+struct Compared
+{
+    double z, loss;
+};
+
+// z and rho of feature f in trial t, with the reference rule of MeasuredSide (GapMeasure.h).
+std::optional<Compared> compare(std::size_t f, std::size_t t, const std::vector<TrialFeatures>& measured,
+                                const std::vector<TrialFeatures>& simulated, const FeatureScatter& scatter,
+                                HelmholtzTrials helmholtz, const std::vector<TrialFeatures>& reference)
+{
+    const double sigma = scatter.trialSigma(t, f);
+    const auto z = normalisedDifference(f, measured[t][f], simulated[t][f], sigma, helmholtz);
+    if (!z)
+        return std::nullopt;
+    Compared c{*z, robustLoss(*z)};
+    if (!simulated[t][f] && t < reference.size() && describesHelmholtzMotion(f))
+        if (const auto zr = normalisedDifference(f, measured[t][f], reference[t][f], sigma, helmholtz))
+            c.loss = std::max(c.loss, robustLoss(*zr));
+    return c;
+}
+} // namespace
+
 GapSummary measureGap(const std::vector<std::size_t>& trials, const std::vector<TrialFeatures>& measured,
-                      const std::vector<TrialFeatures>& simulated, const FeatureScatter& scatter)
+                      const std::vector<TrialFeatures>& simulated, const FeatureScatter& scatter,
+                      HelmholtzTrials helmholtz, const std::vector<TrialFeatures>& reference)
 {
     GapSummary g;
     for (std::size_t t : trials)
         for (std::size_t f = 0; f < kFeatureCount; ++f)
-            if (auto z = normalisedDifference(f, measured[t][f], simulated[t][f], scatter.trialSigma(t, f)))
+            if (const auto c = compare(f, t, measured, simulated, scatter, helmholtz, reference))
             {
-                g.meanSquare[f] += std::min(*z * *z, kMissingZ * kMissingZ);
-                g.meanLoss[f] += robustLoss(*z);
+                g.meanSquare[f] += std::min(c->z * c->z, kMissingZ * kMissingZ);
+                g.meanLoss[f] += c->loss;
                 ++g.count[f];
             }
     std::size_t used = 0;
@@ -87,9 +114,10 @@ GapSummary measureGap(const std::vector<std::size_t>& trials, const std::vector<
 std::vector<double> objectiveShares(const std::vector<std::size_t>& trials,
                                     const std::vector<TrialFeatures>& measured,
                                     const std::vector<TrialFeatures>& simulated,
-                                    const FeatureScatter& scatter)
+                                    const FeatureScatter& scatter,
+                                    const std::vector<TrialFeatures>& reference)
 {
-    const GapSummary g = measureGap(trials, measured, simulated, scatter);
+    const GapSummary g = fitGap(trials, measured, simulated, scatter, reference);
     std::size_t used = 0;
     for (std::size_t f = 0; f < kFeatureCount; ++f)
         used += g.count[f] >= kMinTrialsForGap ? 1 : 0;
@@ -102,8 +130,9 @@ std::vector<double> objectiveShares(const std::vector<std::size_t>& trials,
             if (g.count[f] < kMinTrialsForGap)
                 continue;
             const std::size_t t = trials[i];
-            if (auto z = normalisedDifference(f, measured[t][f], simulated[t][f], scatter.trialSigma(t, f)))
-                shares[i] += robustLoss(*z) / static_cast<double>(g.count[f] * used);
+            if (const auto c =
+                    compare(f, t, measured, simulated, scatter, HelmholtzTrials::MeasuredSide, reference))
+                shares[i] += c->loss / static_cast<double>(g.count[f] * used);
         }
     return shares;
 }

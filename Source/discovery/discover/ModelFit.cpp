@@ -23,7 +23,7 @@ double ModelFit::objective(const std::vector<double>& values)
         return it->second;
     const auto sim = simulateFeatures(build_(values), *in_.dataset, in_.training, in_.seconds, in_.threads);
     ++evaluations_;
-    const double o = measureGap(in_.training, in_.measured, sim, in_.scatter).objective;
+    const double o = fitGap(in_.training, in_.measured, sim, in_.scatter, in_.reference).objective;
     if (o < bestValue_)
     {
         bestValue_ = o;

@@ -24,6 +24,10 @@ struct SearchInputs
     unsigned threads = 1;
     std::uint64_t seed = 0;
     std::ostream* log = nullptr; ///< progress lines, or nullptr
+    /// The model a fit's candidates are compared with, its features indexed like dataset.trials (the
+    /// baseline for the calibration, the current model in the effect search): a candidate that stops
+    /// showing Helmholtz motion where that model shows it gains nothing there (GapMeasure.h).
+    std::vector<TrialFeatures> reference;
 };
 
 } // namespace rosin::discovery
