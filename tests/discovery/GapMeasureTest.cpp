@@ -10,6 +10,7 @@
 #include <random>
 
 #include "discovery/discover/GapMeasure.h"
+#include "discovery/discover/ModelFormTolerance.h"
 #include "discovery/discover/ModelSensitivity.h"
 
 using namespace rosin::discovery;
@@ -141,6 +142,25 @@ TEST(GapMeasure, AFitGainsNothingByLosingTheMotionWhereItWasWrong)
     // Against a reference that also misses them, a lost trial costs 3 sigma.
     EXPECT_NEAR(fitGap(trials, measured, lost, scatter, lost).meanLoss[kPitchCents],
                 (4.0 * robustLoss(0.2) + 4.0 * robustLoss(kMissingZ)) / 8.0, 1e-12);
+}
+
+// The verdict's tolerance: a tilt 1.5 dB off in every trial against a scatter of 0.5 dB is significant in
+// units of the scatter alone (z = 3) and within the model-form tolerance (z = 1.5 / sqrt(0.5^2 + 1.5^2) =
+// 0.95); the regime, a category, keeps its mismatch rate.
+TEST(ModelFormTolerance, WidensTheVerdictsSigmaInQuadrature)
+{
+    FeatureScatter scatter = unitScatter(30);
+    scatter.sigma[kHarmonicTilt] = 0.5;
+    scatter.sigma[kRegime] = 0.25;
+    const FeatureScatter wide = withModelFormTolerance(scatter);
+    EXPECT_NEAR(wide.sigma[kHarmonicTilt], std::hypot(0.5, modelFormTolerance()[kHarmonicTilt]), 1e-12);
+    EXPECT_DOUBLE_EQ(wide.sigma[kRegime], 0.25);
+    std::vector<TrialFeatures> measured(30), simulated(30);
+    std::vector<std::size_t> trials;
+    for (std::size_t t = 0; t < 30; ++t)
+        measured[t][kHarmonicTilt] = -20.0, simulated[t][kHarmonicTilt] = -21.5, trials.push_back(t);
+    EXPECT_LT(gapSignificance(measureGap(trials, measured, simulated, scatter)).pValue, 1e-6);
+    EXPECT_GT(gapSignificance(measureGap(trials, measured, simulated, wide)).pValue, 0.1);
 }
 
 TEST(GapMeasure, StudentLossNullMeanAndGapOfARightModel)

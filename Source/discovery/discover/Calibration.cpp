@@ -85,7 +85,7 @@ CalibrationResult calibrate(const SearchInputs& in, const SimulationModel& model
     std::vector<double> best = fit.best();
     for (std::size_t j = 0; j < ps.size(); ++j)
         if (best[j] != ps[j].nominal())
-            best[j] = roundToThreeDigits(ps[j].prior, best[j]);
+            best[j] = roundToResolution(ps[j].prior, best[j]);
     SimulationModel calibrated = model;
     setNuisance(calibrated, best);
     r.values = calibrated.nuisance;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "ModelFormTolerance.h"
 #include "ModelRuns.h"
 #include "ModelSensitivity.h"
 
@@ -67,7 +68,7 @@ Discovery runDiscovery(const Dataset& dataset, std::vector<TrialFeatures> measur
     d.gapAfter = measureGap(d.used, d.measured, d.final, d.scatter);
     for (std::size_t f = 0; f < kFeatureCount; ++f)
         d.whereAfter[f] = whereLargest(f, dataset, d.grid, d.used, d.measured, d.final, d.scatter);
-    d.remaining = gapSignificance(d.gapAfter);
+    d.remaining = gapSignificance(measureGap(d.used, d.measured, d.final, withModelFormTolerance(d.scatter)));
     d.status = !d.search.steps.empty()                   ? "effect-found"
                : d.remaining.pValue < kSignificanceLevel ? "unexplained"
                                                          : "no-significant-discrepancy";

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "ModelFormTolerance.h"
+
 namespace rosin::discovery
 {
 
@@ -122,7 +124,16 @@ nlohmann::json discoveryJson(const Discovery& d, const Dataset& dataset)
     j["remainingGap"] = {
         {"pValue", d.remaining.pValue},
         {"feature", d.remaining.feature < kFeatureCount ? featureName(d.remaining.feature) : ""},
-        {"test", "chi-square of sum min(z^2, 9) per feature, Bonferroni over features"}};
+        {"test", "chi-square of sum min(z^2, 9) per feature, Bonferroni over features, sigma widened by the "
+                 "model-form tolerance"},
+        {"modelFormTolerance", []
+         {
+             nlohmann::json t = nlohmann::json::object();
+             for (std::size_t f = 0; f < kFeatureCount; ++f)
+                 if (modelFormTolerance()[f] > 0.0)
+                     t[featureName(f)] = modelFormTolerance()[f];
+             return t;
+         }()}};
     j["status"] = d.status;
     j["verdict"] = d.status;
     j["split"] = {{"training", d.training.size()}, {"heldOut", d.heldOut.size()}, {"rule", "checkerboard"}};

@@ -103,10 +103,10 @@ EffectScore score(const SearchInputs& in, const CurrentModel& current, const std
         // (a chaotic transient notices even the fourth digit).
         double& value = m.nuisance.*nuisance[active[k]].value;
         if (fit.best()[ne + k] != value)
-            value = roundToThreeDigits(nuisance[active[k]].prior, fit.best()[ne + k]);
+            value = roundToResolution(nuisance[active[k]].prior, fit.best()[ne + k]);
     }
     for (std::size_t j = 0; j < ne; ++j)
-        s.values.push_back(roundToThreeDigits(effect.parameters[j], fit.best()[j]));
+        s.values.push_back(roundToResolution(effect.parameters[j], fit.best()[j]));
     applyEffect(effect, s.values, m);
     s.nuisance = m.nuisance;
     const auto sim = simulateFeatures(m, *in.dataset, in.heldOut, in.seconds, in.threads);

@@ -33,11 +33,16 @@ double ModelFit::objective(const std::vector<double>& values)
 }
 
 // Fitted values are reported (and adopted) to 3 significant digits: the fit is not finer than that.
-double roundToThreeDigits(const EffectParameter& p, double v)
+double roundToResolution(const EffectParameter& p, double v)
 {
     if (!p.choices.empty() || v == 0.0)
         return v;
-    const double scale = std::pow(10.0, 2 - static_cast<int>(std::floor(std::log10(std::abs(v)))));
+    // 10^k with k the exponent of x's third significant digit, as a power of ten to multiply by (exact for
+    // the decimal digits that matter, unlike a step of 1e-4).
+    auto perThirdDigit = [](double x) { return std::pow(10.0, 2.0 - std::floor(std::log10(std::abs(x)))); };
+    double scale = perThirdDigit(v);
+    if (!p.logarithmic && p.max > p.min)
+        scale = std::max(scale, perThirdDigit(p.max - p.min));
     return std::clamp(std::round(v * scale) / scale, p.min, p.max);
 }
 

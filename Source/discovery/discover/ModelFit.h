@@ -16,9 +16,10 @@
 namespace rosin::discovery
 {
 
-/// Fitted values are reported (and adopted) to 3 significant digits: no fit here is finer than that. A
-/// choice is returned as it is.
-double roundToThreeDigits(const EffectParameter& parameter, double value);
+/// Fitted values are reported (and adopted) to 3 significant digits, of the value or, on a linear scale, of
+/// its range's width where that is finer (tension within 0.98-1.02: steps of 1e-4, 0.09 cents, not of 0.01,
+/// 8.6 cents): no fit here is finer than that. A choice is returned as it is.
+double roundToResolution(const EffectParameter& parameter, double value);
 
 /// The model at a point: `values` in the order of the fit's coordinates.
 using ModelBuilder = std::function<SimulationModel(const std::vector<double>& values)>;

@@ -4,8 +4,8 @@
 // chosen friction law and the galluzzo contact; the rosin starts at the trial's ambient temperature (the
 // thermal laws are calibrated at 20 C: ambientOffset = T - 20). A simulated trial runs with the nominal
 // settings and the measured trial's length through TrialSimulator (as rosin synth-data does), then the
-// sensor high-pass of SensorChain (no noise) and the calibrated chain (gain, low-pass, force channels' lag: the
-// model's NuisanceValues), and is analysed by computeTrialFeatures like a measurement.
+// sensor high-pass of SensorChain (no noise) and the calibrated chain (gain, low-pass, force channels' lag:
+// the model's NuisanceValues), and is analysed by computeTrialFeatures like a measurement.
 #include <cstddef>
 #include <string>
 #include <vector>

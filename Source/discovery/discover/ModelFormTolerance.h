@@ -1,0 +1,36 @@
+#pragma once
+// How far two string models with the same physics still disagree after calibration, per feature: the
+// model-form tolerance of the verdict (issue 16). The verdict asks whether what remains after calibration and
+// the adopted effects is more than the measurement's scatter explains; against a measurement that no model
+// of this one's form made, "the scatter" must include what any second model with the same physics would
+// leave. Measured, not assumed: Rosin against the project's independent generator (a digital waveguide with
+// its own heat balance, `rosin synth-data --generator independent`) on Schelleng scans (12 x 12) with nothing
+// hidden, drawn with seeds 17 and 23, which neither the README's table nor a test uses: tau^2 =
+// mean(d^2 - sigma^2) over the 50 trials where the calibrated model and the measurement both show Helmholtz
+// motion, d = measured - model, sigma the trial's scatter. The pitch's part is not the tension: seed 17's
+// string plays 2.7 cents flatter than the calibrated model (median), and the tension that would match it
+// (x1.0169 for the calibrated x1.02) fits the other features worse (tried: the training objective rose).
+// Features of the attack (first slip,
+// transient) are left at 0: on Guettler scans with nothing hidden the calibrated model is already within
+// their scatter. It is a calibration of the verdict against one second model, not a reproduction of
+// anything; a bowing machine will differ from both models by at least this much.
+//
+// Only the verdict (no-significant-discrepancy or unexplained) uses it: fits, the paired test that names an
+// effect and the gaps reported stay in units of the measurement's own scatter, so a systematic misfit that
+// an effect explains counts in full there.
+// JUCE-free.
+#include <array>
+
+#include "FeatureScatter.h"
+#include "TrialFeatures.h"
+
+namespace rosin::discovery
+{
+
+/// tau per feature, in the feature's unit (0: none measured beyond the scatter).
+const std::array<double, kFeatureCount>& modelFormTolerance() noexcept;
+
+/// `scatter` with every feature's sigma widened to sqrt(sigma^2 + tau^2) (a category keeps its rate).
+FeatureScatter withModelFormTolerance(FeatureScatter scatter);
+
+} // namespace rosin::discovery
