@@ -238,9 +238,10 @@ TEST_F(DiscoverCli, NothingHiddenNamesNothing)
 
 // Data that Rosin's stepper did not make (issue 16 item 6): the independent generator's waveguide string,
 // heat balance and measurement chain, with the rig's constants off nominal within a lab's tolerances and an
-// unstated low-pass, gain error and start delay. The nominal baseline is far off (gap 1.61 measured), the
-// calibration within the stated tolerances explains it (0.20), and no effect is named (every candidate's
-// held-out gain negative; the remaining gap's p 0.055, in the harmonic tilt, against the verdict's 0.01).
+// unstated low-pass, gain error and start delay. The nominal baseline is far off (gap 1.59 measured), the
+// calibration within the stated tolerances explains it (0.26), and no effect is named (every candidate's
+// held-out gain negative; the remaining gap's p 1 with the verdict's model-form tolerance, 0.022-0.06
+// without it, against the verdict's 0.01).
 TEST_F(DiscoverCli, ForeignDataWithNothingHiddenIsExplainedByCalibration)
 {
     makeDataset({"none"}, "4", "foreign", {"--beta", "0.0899", "--generator", "independent"});
@@ -255,9 +256,12 @@ TEST_F(DiscoverCli, ForeignDataWithNothingHiddenIsExplainedByCalibration)
 // Calibration recovers what a lab states wrongly: the independent generator's Schelleng scan (12 x 12, seed
 // 31) drew the string's tension 1.17 % above the stated one (the truth file says so, the dataset does not),
 // and the pitch of its Helmholtz trials pins it. The calibrated tension must lie within 0.5 % of the drawn
-// one (1.01 measured) and the calibration must remove at least 30 % of the gap (1.08 -> 0.51 measured). The
-// descent that fitted the contact radius first, which flattens the pitch a little as a lower tension does,
-// stayed at the nominal tension there (gap 1.08 -> 1.10).
+// one (1.01 measured) and the calibration must remove at least 20 % of the gap (1.08 -> 0.74 measured; the
+// gap reported compares pitch and tilt where both sides show Helmholtz motion, the calibration fits them
+// where the measurement does, so it does not minimise this number). The descent that fitted the contact
+// radius first, which flattens the pitch a little as a lower tension does, stayed at the nominal tension
+// there (gap 1.08 -> 1.10). Nothing is hidden, so the verdict must be clean: with the model-form tolerance
+// (measured on other seeds) the remaining gap's p is 0.21 here, against 1e-5 without it.
 TEST_F(DiscoverCli, CalibrationRecoversTheTensionOfAForeignString)
 {
     const Result made = rosin({"synth-data", "--generator", "independent", "--effect", "none", "--scan",
@@ -273,7 +277,8 @@ TEST_F(DiscoverCli, CalibrationRecoversTheTensionOfAForeignString)
         if (p["name"] == "tension")
             calibrated = p["baseline"];
     EXPECT_NEAR(calibrated / drawn, 1.0, 0.005) << "calibrated " << calibrated << ", drawn " << drawn;
-    EXPECT_LT(j["calibration"]["gapAfterCalibration"].get<double>(), 0.7 * j["gapBefore"].get<double>());
+    EXPECT_LT(j["calibration"]["gapAfterCalibration"].get<double>(), 0.8 * j["gapBefore"].get<double>());
+    EXPECT_EQ(j["status"], "no-significant-discrepancy") << j["remainingGap"].dump();
 }
 
 TEST_F(DiscoverCli, MalformedDatasetIsRefusedWithFileAndField)
