@@ -80,7 +80,7 @@ std::string discoverHelp()
 Compares a measured dataset (format rosin-measurements/1) with Rosin's baseline model, simulated trial by
 trial with the nominal settings through the dataset's sensor high-pass; finds where they disagree
 (features: staticFriction, jump, creep, firstSlipTime, transientPeriods, pitchCents, harmonicTilt,
-helmholtzLevel, the regime (a category, weighed by how often the measurement disagrees with itself), and
+steadyLevel, the regime (a category, weighed by how often the measurement disagrees with itself), and
 slipFraction and loopArea where the bowed point is recorded, each normalised by the measurement's own
 scatter and the model's sensitivity to 2 % changes of the settings), fits each effect of the catalog on a
 training half (checkerboard over the grid) and adopts the one that removes the most held-out gap if

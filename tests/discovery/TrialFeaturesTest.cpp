@@ -56,7 +56,7 @@ TEST(TrialFeatures, ALateRecordIsAlignedToTheStrokeByItsBowVelocity)
 }
 
 // Ideal Helmholtz motion drives the bridge with a sawtooth of peak-to-peak 2 Z0 v_b / beta (the corner's
-// slope jump times T); a simulated steady note in Helmholtz motion keeps most of it: its helmholtzLevel
+// slope jump times T); a simulated steady note in Helmholtz motion keeps most of it: its steadyLevel
 // lies within a dB or two below 0 dB (the losses round the corner, the body takes a little), and its
 // pitch is a few cents flat, not a whole sample (5.8 cents) of quantisation.
 TEST(TrialFeatures, SteadyHelmholtzMotionHasTheIdealSawtoothLevel)
@@ -80,9 +80,37 @@ TEST(TrialFeatures, SteadyHelmholtzMotionHasTheIdealSawtoothLevel)
     const auto f = computeTrialFeatures(force, c);
     ASSERT_TRUE(f[kRegime].has_value());
     ASSERT_EQ(*f[kRegime], static_cast<double>(rosin::lab::Regime::Helmholtz));
-    ASSERT_TRUE(f[kHelmholtzLevel] && f[kPitchCents]);
-    EXPECT_LT(*f[kHelmholtzLevel], 0.5);
-    EXPECT_GT(*f[kHelmholtzLevel], -2.0);
+    ASSERT_TRUE(f[kSteadyLevel] && f[kPitchCents]);
+    EXPECT_LT(*f[kSteadyLevel], 0.5);
+    EXPECT_GT(*f[kSteadyLevel], -2.0);
     EXPECT_LT(*f[kPitchCents], 1.0); // flat or at pitch, never sharp by more than a cent
     EXPECT_GT(*f[kPitchCents], -15.0);
+}
+
+// Above Schelleng's maximum force the motion is raucous: no pitch, no tilt, but the level is read (issue 16
+// item 5: most of a Schelleng scan lies outside Helmholtz motion) and lies within the sawtooth's range.
+TEST(TrialFeatures, SteadyLevelIsReadOutsideHelmholtzMotionToo)
+{
+    TrialSimulator sim(SimulationModel{}, kFs);
+    TrialSettings t;
+    t.beta = 0.1;
+    t.bowForce = 4.0;
+    t.gesture = Steady{0.1};
+    t.seconds = 0.5;
+    const auto force = channelSamples(sim.run(t), "bridgeForce");
+    FeatureContext c;
+    c.sampleRate = kFs;
+    c.beta = t.beta;
+    c.bowForce = t.bowForce;
+    c.gesture = t.gesture;
+    c.periodSeconds = sim.periodSeconds();
+    c.impedance =
+        std::sqrt(SimulationModel{}.preset.string.tension * SimulationModel{}.preset.string.massPerLength);
+    const auto f = computeTrialFeatures(force, c);
+    ASSERT_TRUE(f[kRegime].has_value());
+    ASSERT_NE(*f[kRegime], static_cast<double>(rosin::lab::Regime::Helmholtz));
+    EXPECT_FALSE(f[kPitchCents] || f[kHarmonicTilt]);
+    ASSERT_TRUE(f[kSteadyLevel].has_value());
+    EXPECT_LT(*f[kSteadyLevel], 6.0);
+    EXPECT_GT(*f[kSteadyLevel], -20.0);
 }

@@ -12,7 +12,6 @@ const std::array<double, kFeatureCount>& modelFormTolerance() noexcept
         std::array<double, kFeatureCount> t{};
         t[kPitchCents] = 2.1;      // cents: 2.4 rms left against a scatter of 1.1 (50 trials)
         t[kHarmonicTilt] = 1.5;    // dB: 1.54 rms left against 0.49
-        t[kHelmholtzLevel] = 0.13; // dB: 0.24 rms left against 0.20
         return t;
     }();
     return tau;

@@ -105,7 +105,7 @@ std::optional<double> pitchCents(const std::vector<double>& force, std::size_t f
 
 // The bridge force's rms about its linear trend over [from, end) against the ideal Helmholtz sawtooth's for
 // the window's mean bow speed (TrialFeatures.h), dB.
-std::optional<double> helmholtzLevel(const std::vector<double>& force, std::size_t from,
+std::optional<double> steadyLevel(const std::vector<double>& force, std::size_t from,
                                      const FeatureContext& c, const ContactSignals& contact)
 {
     const std::size_t end = force.size();
@@ -145,7 +145,7 @@ const char* featureName(std::size_t feature) noexcept
 {
     static constexpr const char* names[] = {
         "staticFriction",   "jump",       "creep",        "firstSlipTime",
-        "transientPeriods", "pitchCents", "harmonicTilt", "helmholtzLevel",
+        "transientPeriods", "pitchCents", "harmonicTilt", "steadyLevel",
         "slipFraction",     "loopArea",   "regime"};
     static_assert(std::size(names) == kFeatureCount, "one name per feature");
     return feature < kFeatureCount ? names[feature] : "?";
@@ -172,7 +172,7 @@ double featureResolution(std::size_t feature, double sampleRate) noexcept
     case kTransientPeriods:
         return 0.5;
     case kHarmonicTilt:
-    case kHelmholtzLevel:
+    case kSteadyLevel:
         return 0.2;
     case kSlipFraction:
         return 0.005;
@@ -185,7 +185,7 @@ double featureResolution(std::size_t feature, double sampleRate) noexcept
 
 bool describesHelmholtzMotion(std::size_t feature) noexcept
 {
-    return feature == kPitchCents || feature == kHarmonicTilt || feature == kHelmholtzLevel ||
+    return feature == kPitchCents || feature == kHarmonicTilt ||
            feature == kSlipFraction || feature == kLoopArea;
 }
 
@@ -264,11 +264,11 @@ TrialFeatures computeTrialFeatures(const std::vector<double>& force, const Featu
         const lab::RegimeAnalysis r = lab::classifyFromBridgeForce(
             force, periodSamples, lab::AnalysisWindow{force.size() / 2, 0}, onsetOptions);
         f[kRegime] = static_cast<double>(r.regime);
+        f[kSteadyLevel] = steadyLevel(force, force.size() / 2, c, contact);
         if (r.regime == lab::Regime::Helmholtz)
         {
             f[kPitchCents] = pitchCents(force, force.size() / 2, r, periodSamples);
             f[kHarmonicTilt] = tilt(force, force.size() / 2, c);
-            f[kHelmholtzLevel] = helmholtzLevel(force, force.size() / 2, c, contact);
             addContactFeatures(f, force.size() / 2, force.size(), c, contact);
         }
     }

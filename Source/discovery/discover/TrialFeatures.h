@@ -23,10 +23,15 @@
 //                    the losses show while the bow stays on the string (no gesture of the format lets the
 //                    string ring freely). Read in any regime, it is as chaotic as the regime and hides the
 //                    losses: tried and dropped.
-//   helmholtzLevel   steady trials only, over the same window as harmonicTilt: the bridge force's rms about
+//   steadyLevel      steady trials only, in every regime, over the second half: the bridge force's rms about
 //                    its linear trend against the ideal Helmholtz sawtooth's, 2 Z0 v_b / (beta sqrt 12)
 //                    (Z0 = sqrt(T mu), v_b the bow's mean speed over the window), dB: how much of the bow's
-//                    drive the string's motion keeps (losses, rounded corners, a gauge's gain lower it). In
+//                    drive the string's motion keeps (losses, rounded corners, a gauge's gain lower it).
+//                    Read in raucous and multiple-slip motion too, where a Schelleng scan has most of its
+//                    cells (issue 16 item 5: 60 % of a 12 x 12 scan is raucous, 20 % Helmholtz): there it
+//                    follows the friction and the losses as well, so a contact or damping effect shows
+//                    beyond the few Helmholtz cells; a regime that differs between the two sides is the
+//                    regime's evidence, the level compares the amplitudes as they are. In
 //                    a constant-acceleration start the amplitude still lags the rising bow speed at the end
 //                    of the trial (-1 to -15 dB across a Guettler grid, as chaotic as the transient): tried
 //                    there and dropped.
@@ -61,7 +66,7 @@ enum Feature : std::size_t
     kTransientPeriods,
     kPitchCents,
     kHarmonicTilt,
-    kHelmholtzLevel,
+    kSteadyLevel,
     kSlipFraction,
     kLoopArea,
     kRegime,
@@ -81,7 +86,7 @@ const char* featureUnit(std::size_t feature) noexcept;
 double featureResolution(std::size_t feature, double sampleRate) noexcept;
 
 /// True for the features measured only in established Helmholtz motion (pitchCents, harmonicTilt,
-/// helmholtzLevel, slipFraction, loopArea).
+/// slipFraction, loopArea).
 bool describesHelmholtzMotion(std::size_t feature) noexcept;
 
 /// True for a feature whose value names a category (the regime): compared as equal or not.
@@ -99,7 +104,7 @@ struct FeatureContext
     double periodSeconds = 0.0; ///< nominal P of the rig's string
     double highpassHz = 0.0;    ///< sensor high-pass to undo (0: none)
     double noiseRms = 0.0;      ///< sensor noise, N (the same threshold for measurement and simulation)
-    double impedance = 0.0;     ///< Z0 = sqrt(T mu) of the rig's string, kg/s (0: no helmholtzLevel)
+    double impedance = 0.0;     ///< Z0 = sqrt(T mu) of the rig's string, kg/s (0: no steadyLevel)
 };
 
 /// The bowed point's own channels, where a dataset has them (nullptr where not).
