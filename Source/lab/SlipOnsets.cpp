@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <set>
 
 namespace rosin::lab
@@ -10,27 +9,30 @@ namespace rosin::lab
 
 namespace
 {
-// Largest (or, with less = greater, smallest) value of x within +-radius of each sample: a monotonic deque.
+// Largest (or, with less = greater, smallest) value of x within +-radius of each sample: a monotonic queue
+// of indices (each enters and leaves once, O(n)), kept in a plain array: with std::deque this search was 7 %
+// of a rosin discover run's profile.
 template <typename Better>
 std::vector<double> slidingExtreme(const std::vector<double>& x, std::size_t radius, Better better)
 {
     const std::size_t n = x.size();
     std::vector<double> out(n);
-    std::deque<std::size_t> q; // indices whose values are in `better` order
-    std::size_t next = 0;      // next index to enter the window
+    std::vector<std::size_t> q(n); // q[head, tail): indices whose values are in `better` order
+    std::size_t head = 0, tail = 0;
+    std::size_t next = 0; // next index to enter the window
     for (std::size_t k = 0; k < n; ++k)
     {
         const std::size_t hi = std::min(n - 1, k + radius);
         for (; next <= hi; ++next)
         {
-            while (!q.empty() && !better(x[q.back()], x[next]))
-                q.pop_back();
-            q.push_back(next);
+            while (tail > head && !better(x[q[tail - 1]], x[next]))
+                --tail;
+            q[tail++] = next;
         }
         const std::size_t lo = k > radius ? k - radius : 0;
-        while (q.front() < lo)
-            q.pop_front();
-        out[k] = x[q.front()];
+        while (q[head] < lo)
+            ++head;
+        out[k] = x[q[head]];
     }
     return out;
 }
