@@ -55,20 +55,18 @@ TEST(TrialFeatures, ALateRecordIsAlignedToTheStrokeByItsBowVelocity)
     EXPECT_NEAR(*unaligned[kFirstSlipTime] - *onTime[kFirstSlipTime], delay / kFs, 2e-5);
 }
 
-// Ideal Helmholtz motion drives the bridge with a sawtooth of peak-to-peak 2 Z0 v_b / beta (the corner's
-// slope jump times T); a simulated steady note in Helmholtz motion keeps most of it: its steadyLevel
-// lies within a dB or two below 0 dB (the losses round the corner, the body takes a little), and its
-// pitch is a few cents flat, not a whole sample (5.8 cents) of quantisation.
-TEST(TrialFeatures, SteadyHelmholtzMotionHasTheIdealSawtoothLevel)
+namespace
+{
+// The features of a steady note simulated with the default model at (beta, force) and 0.1 m/s.
+TrialFeatures steadyNote(double beta, double bowForce, double seconds)
 {
     TrialSimulator sim(SimulationModel{}, kFs);
     TrialSettings t;
-    t.beta = 0.1;
-    t.bowForce = 0.5;
+    t.beta = beta;
+    t.bowForce = bowForce;
     t.gesture = Steady{0.1};
-    t.seconds = 1.0;
-    const auto& samples = sim.run(t);
-    const auto force = channelSamples(samples, "bridgeForce");
+    t.seconds = seconds;
+    const auto force = channelSamples(sim.run(t), "bridgeForce");
     FeatureContext c;
     c.sampleRate = kFs;
     c.beta = t.beta;
@@ -77,7 +75,17 @@ TEST(TrialFeatures, SteadyHelmholtzMotionHasTheIdealSawtoothLevel)
     c.periodSeconds = sim.periodSeconds();
     c.impedance =
         std::sqrt(SimulationModel{}.preset.string.tension * SimulationModel{}.preset.string.massPerLength);
-    const auto f = computeTrialFeatures(force, c);
+    return computeTrialFeatures(force, c);
+}
+} // namespace
+
+// Ideal Helmholtz motion drives the bridge with a sawtooth of peak-to-peak 2 Z0 v_b / beta (the corner's
+// slope jump times T); a simulated steady note in Helmholtz motion keeps most of it: its steadyLevel
+// lies within a dB or two below 0 dB (the losses round the corner, the body takes a little), and its
+// pitch is a few cents flat, not a whole sample (5.8 cents) of quantisation.
+TEST(TrialFeatures, SteadyHelmholtzMotionHasTheIdealSawtoothLevel)
+{
+    const auto f = steadyNote(0.1, 0.5, 1.0);
     ASSERT_TRUE(f[kRegime].has_value());
     ASSERT_EQ(*f[kRegime], static_cast<double>(rosin::lab::Regime::Helmholtz));
     ASSERT_TRUE(f[kSteadyLevel] && f[kPitchCents]);
@@ -91,22 +99,7 @@ TEST(TrialFeatures, SteadyHelmholtzMotionHasTheIdealSawtoothLevel)
 // item 5: most of a Schelleng scan lies outside Helmholtz motion) and lies within the sawtooth's range.
 TEST(TrialFeatures, SteadyLevelIsReadOutsideHelmholtzMotionToo)
 {
-    TrialSimulator sim(SimulationModel{}, kFs);
-    TrialSettings t;
-    t.beta = 0.1;
-    t.bowForce = 4.0;
-    t.gesture = Steady{0.1};
-    t.seconds = 0.5;
-    const auto force = channelSamples(sim.run(t), "bridgeForce");
-    FeatureContext c;
-    c.sampleRate = kFs;
-    c.beta = t.beta;
-    c.bowForce = t.bowForce;
-    c.gesture = t.gesture;
-    c.periodSeconds = sim.periodSeconds();
-    c.impedance =
-        std::sqrt(SimulationModel{}.preset.string.tension * SimulationModel{}.preset.string.massPerLength);
-    const auto f = computeTrialFeatures(force, c);
+    const auto f = steadyNote(0.1, 4.0, 0.5);
     ASSERT_TRUE(f[kRegime].has_value());
     ASSERT_NE(*f[kRegime], static_cast<double>(rosin::lab::Regime::Helmholtz));
     EXPECT_FALSE(f[kPitchCents] || f[kHarmonicTilt]);
