@@ -44,6 +44,7 @@ namespace rosin::discovery
 {
 
 inline constexpr double kMissingZ = 3.0;
+inline constexpr double kStudentNu = 4.0;
 
 /// Which trials a Helmholtz-motion feature is compared in (see above).
 enum class HelmholtzTrials
@@ -51,7 +52,6 @@ enum class HelmholtzTrials
     BothSides,
     MeasuredSide
 };
-inline constexpr double kStudentNu = 4.0;
 
 /// rho(z) = nu ln(1 + z^2 / nu), the Student-t loss of one normalised difference.
 double robustLoss(double z) noexcept;

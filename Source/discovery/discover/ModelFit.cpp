@@ -32,7 +32,7 @@ double ModelFit::objective(const std::vector<double>& values)
     return memo_[values] = o;
 }
 
-// Fitted values are reported (and adopted) to 3 significant digits: the fit is not finer than that.
+// To 3 significant digits of the value or of a linear prior's width (ModelFit.h).
 double roundToResolution(const EffectParameter& p, double v)
 {
     if (!p.choices.empty() || v == 0.0)

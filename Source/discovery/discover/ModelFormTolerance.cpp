@@ -10,8 +10,8 @@ const std::array<double, kFeatureCount>& modelFormTolerance() noexcept
     static const std::array<double, kFeatureCount> tau = []
     {
         std::array<double, kFeatureCount> t{};
-        t[kPitchCents] = 2.1;      // cents: 2.4 rms left against a scatter of 1.1 (50 trials)
-        t[kHarmonicTilt] = 1.5;    // dB: 1.54 rms left against 0.49
+        t[kPitchCents] = 2.1;   // cents: 2.4 rms left against a scatter of 1.1 (50 trials)
+        t[kHarmonicTilt] = 1.5; // dB: 1.54 rms left against 0.49
         return t;
     }();
     return tau;

@@ -105,8 +105,8 @@ std::optional<double> pitchCents(const std::vector<double>& force, std::size_t f
 
 // The bridge force's rms about its linear trend over [from, end) against the ideal Helmholtz sawtooth's for
 // the window's mean bow speed (TrialFeatures.h), dB.
-std::optional<double> steadyLevel(const std::vector<double>& force, std::size_t from,
-                                     const FeatureContext& c, const ContactSignals& contact)
+std::optional<double> steadyLevel(const std::vector<double>& force, std::size_t from, const FeatureContext& c,
+                                  const ContactSignals& contact)
 {
     const std::size_t end = force.size();
     if (!(c.impedance > 0.0) || end < from + 16)
@@ -143,10 +143,9 @@ void addContactFeatures(TrialFeatures& f, std::size_t from, std::size_t frames, 
 
 const char* featureName(std::size_t feature) noexcept
 {
-    static constexpr const char* names[] = {
-        "staticFriction",   "jump",       "creep",        "firstSlipTime",
-        "transientPeriods", "pitchCents", "harmonicTilt", "steadyLevel",
-        "slipFraction",     "loopArea",   "regime"};
+    static constexpr const char* names[] = {"staticFriction",   "jump",       "creep",        "firstSlipTime",
+                                            "transientPeriods", "pitchCents", "harmonicTilt", "steadyLevel",
+                                            "slipFraction",     "loopArea",   "regime"};
     static_assert(std::size(names) == kFeatureCount, "one name per feature");
     return feature < kFeatureCount ? names[feature] : "?";
 }
@@ -185,8 +184,8 @@ double featureResolution(std::size_t feature, double sampleRate) noexcept
 
 bool describesHelmholtzMotion(std::size_t feature) noexcept
 {
-    return feature == kPitchCents || feature == kHarmonicTilt ||
-           feature == kSlipFraction || feature == kLoopArea;
+    return feature == kPitchCents || feature == kHarmonicTilt || feature == kSlipFraction ||
+           feature == kLoopArea;
 }
 
 bool isCategorical(std::size_t feature) noexcept
