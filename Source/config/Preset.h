@@ -45,6 +45,9 @@ struct Preset
     bool bendingStiffness = true; ///< EI on (seed 001 Fig. 12f turns it off)
     double ambientOffset = 0.0;   ///< K, rosin temperature at rest minus the calibration's ambient
     double beta = 0.0899;         ///< default bow position for gestures that do not set one
+    /// dB, the plugin's output level for this program (its default -12 dB when absent): a calibration, set so
+    /// that the demo phrase peaks near -6 dBFS (README, "What the plugin sends").
+    std::optional<double> outputLevel;
     std::optional<RigPreset> rig; ///< set: the rig is bowed instead of the string and body
 };
 

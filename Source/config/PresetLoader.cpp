@@ -34,6 +34,7 @@ constexpr Range kContactRadius{1e-6, 0.01, "m"};
 constexpr Range kReferenceForce{1e-3, 100.0, "N"};
 constexpr Range kLayerThickness{1e-9, 1e-3, "m"};
 constexpr Range kAmbientOffset{-50.0, 100.0, "K"};
+constexpr Range kOutputLevel{-60.0, 12.0, "dB"}; // the plugin's outputLevel parameter
 constexpr Range kRigFrequency{1.0, 10000.0, "Hz"};
 constexpr Range kRigQ{0.6, 1e5, ""};
 constexpr Range kRigMass{1e-5, 100.0, "kg"};
@@ -176,7 +177,7 @@ Preset parsePreset(const nlohmann::json& root, const std::string& file, const st
     requireFormat(root, file, "rosin-preset/1");
     const JsonObject r(root, file, "");
     r.allowOnly({"format", "name", "description", "string", "body", "friction", "contact", "torsion",
-                 "bendingStiffness", "ambientOffset", "beta", "rig"});
+                 "bendingStiffness", "ambientOffset", "beta", "outputLevel", "rig"});
 
     Preset p = defaultPreset();
     p.source = file;
@@ -199,6 +200,7 @@ Preset parsePreset(const nlohmann::json& root, const std::string& file, const st
     p.bendingStiffness = r.optionalBool("bendingStiffness").value_or(p.bendingStiffness);
     p.ambientOffset = r.optionalNumber("ambientOffset", kAmbientOffset).value_or(p.ambientOffset);
     p.beta = r.optionalNumber("beta", gesture::limits::beta).value_or(p.beta);
+    p.outputLevel = r.optionalNumber("outputLevel", kOutputLevel);
     parseRig(r, p);
     return p;
 }

@@ -19,6 +19,13 @@ ParameterControls::ParameterControls(juce::AudioProcessorValueTreeState& state) 
         "Intonation by ear: the finger follows the pitch the string sounds (off: finger geometry)");
     earAttachment_ =
         std::make_unique<juce::AudioProcessorValueTreeState::ButtonAttachment>(state_, ids::intonation, ear_);
+    addSelector(ids::output, "Output");
+    addAndMakeVisible(dcBlocker_);
+    dcBlocker_.setTooltip(
+        "A 10 Hz high-pass on the bridge force and velocity outputs (the radiated sound has no "
+        "DC)");
+    dcBlockerAttachment_ = std::make_unique<juce::AudioProcessorValueTreeState::ButtonAttachment>(
+        state_, ids::dcBlocker, dcBlocker_);
 
     addKnob(ids::bowForce, "Bow force", " N", 3);
     addKnob(ids::bowSpeed, "Bow speed", " m/s", 3);
@@ -73,17 +80,23 @@ void ParameterControls::resized()
 {
     auto area = getLocalBounds();
     auto row = area.removeFromTop(kSelectorRowHeight);
-    // Selector widths: label (attached on the left) + box.
-    const int labelWidths[] = {80, 56, 90};
-    const int boxWidths[] = {100, 80, 140};
+    // Selector widths: label (attached on the left) + box. The first three share the top row with the body
+    // and ear switches; the output choice and its DC blocker take the second.
+    const int labelWidths[] = {80, 56, 90, 80};
+    const int boxWidths[] = {100, 80, 140, 140};
     for (std::size_t i = 0; i < selectors_.size(); ++i)
     {
+        if (i == 3)
+        {
+            body_.setBounds(row.removeFromLeft(70));
+            ear_.setBounds(row.removeFromLeft(150));
+            row = area.removeFromTop(kSelectorRowHeight);
+        }
         row.removeFromLeft(labelWidths[i]);
         selectors_[i]->box.setBounds(row.removeFromLeft(boxWidths[i]).reduced(0, 2));
         row.removeFromLeft(12);
     }
-    body_.setBounds(row.removeFromLeft(70));
-    ear_.setBounds(row.removeFromLeft(150));
+    dcBlocker_.setBounds(row.removeFromLeft(110));
 
     area.removeFromTop(8);
     const int n = static_cast<int>(knobs_.size());

@@ -44,6 +44,8 @@ class ParameterControls : public juce::Component
     std::unique_ptr<juce::AudioProcessorValueTreeState::ButtonAttachment> bodyAttachment_;
     juce::ToggleButton ear_{"Intonation by ear"};
     std::unique_ptr<juce::AudioProcessorValueTreeState::ButtonAttachment> earAttachment_;
+    juce::ToggleButton dcBlocker_{"DC blocker"};
+    std::unique_ptr<juce::AudioProcessorValueTreeState::ButtonAttachment> dcBlockerAttachment_;
 };
 
 } // namespace rosin::plugin

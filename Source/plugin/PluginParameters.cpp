@@ -5,12 +5,13 @@
 namespace rosin::plugin
 {
 
-const std::array<const char*, 11>& allParameterIds()
+const std::array<const char*, 13>& allParameterIds()
 {
-    static const std::array<const char*, 11> list = {
+    static const std::array<const char*, 13> list = {
         ids::bowForce,   ids::bowSpeed, ids::attackAcceleration, ids::beta,
         ids::friction,   ids::body,     ids::ambientTemperature, ids::outputLevel,
-        ids::instrument, ids::string,   ids::intonation};
+        ids::instrument, ids::string,   ids::intonation,         ids::output,
+        ids::dcBlocker};
     return list;
 }
 
@@ -87,6 +88,9 @@ juce::AudioProcessorValueTreeState::ParameterLayout createParameterLayout()
     layout.add(std::make_unique<juce::AudioParameterChoice>(
         pid(ids::string), "String", juce::StringArray{"auto", "I", "II", "III", "IV"}, 0));
     layout.add(std::make_unique<juce::AudioParameterBool>(pid(ids::intonation), "Intonation by ear", true));
+    layout.add(std::make_unique<juce::AudioParameterChoice>(pid(ids::output), "Output", outputChoiceNames(),
+                                                            static_cast<int>(OutputChoice::RadiatedSound)));
+    layout.add(std::make_unique<juce::AudioParameterBool>(pid(ids::dcBlocker), "DC blocker", true));
     return layout;
 }
 
@@ -100,10 +104,12 @@ ParameterReader::ParameterReader(juce::AudioProcessorValueTreeState& state)
       outputLevel_(state.getRawParameterValue(ids::outputLevel)),
       instrument_(state.getRawParameterValue(ids::instrument)),
       string_(state.getRawParameterValue(ids::string)),
-      intonation_(state.getRawParameterValue(ids::intonation))
+      intonation_(state.getRawParameterValue(ids::intonation)),
+      output_(state.getRawParameterValue(ids::output)), dcBlocker_(state.getRawParameterValue(ids::dcBlocker))
 {
     jassert(bowForce_ && bowSpeed_ && attackAcceleration_ && beta_ && friction_ && body_ &&
-            ambientTemperature_ && outputLevel_ && instrument_ && string_ && intonation_);
+            ambientTemperature_ && outputLevel_ && instrument_ && string_ && intonation_ && output_ &&
+            dcBlocker_);
 }
 
 InstrumentKey ParameterReader::readKey() const noexcept
@@ -131,7 +137,10 @@ ParameterSnapshot ParameterReader::read(int stringCount) const noexcept
     s.gesture.stringOverride = s.stringChoice == 0 ? -1 : juce::jmax(0, stringCount - s.stringChoice);
     s.key = readKey();
     s.intonationByEar = intonation_->load() >= 0.5f;
-    s.outputGain = std::pow(10.0, finiteOr(outputLevel_, kDefaultOutputLevelDb) / 20.0);
+    s.output.gain = std::pow(10.0, finiteOr(outputLevel_, kDefaultOutputLevelDb) / 20.0);
+    s.output.choice =
+        static_cast<OutputChoice>(juce::jlimit(0, 2, static_cast<int>(std::lround(finiteOr(output_, 0.0f)))));
+    s.output.dcBlocker = dcBlocker_->load() >= 0.5f;
     return s;
 }
 

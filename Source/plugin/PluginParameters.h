@@ -5,6 +5,7 @@
 
 #include <juce_audio_processors/juce_audio_processors.h>
 
+#include "OutputStage.h"
 #include "gesture/GestureParameters.h"
 #include "physics/friction/FrictionLawFactory.h"
 
@@ -24,15 +25,17 @@ inline constexpr const char* outputLevel = "outputLevel";               ///< dB,
 inline constexpr const char* instrument = "instrument";                 ///< choice: cello, violin
 inline constexpr const char* string = "string";                         ///< choice: auto, I..IV
 inline constexpr const char* intonation = "intonation";                 ///< bool: the player's ear corrects
+inline constexpr const char* output = "output";                         ///< choice: OutputStage.h
+inline constexpr const char* dcBlocker = "dcBlocker";                   ///< bool: on force and velocity
 inline constexpr int version = 1;
 } // namespace ids
 
 /// Every parameter ID, for tests and fuzzers.
-const std::array<const char*, 11>& allParameterIds();
+const std::array<const char*, 13>& allParameterIds();
 
 /// The calibration ambient of the thermal laws: ContactParameters::ambientOffset = T - 20 C.
 inline constexpr double kCalibrationAmbientCelsius = 20.0;
-/// Default output level: the demo phrase peaks near -6 dBFS.
+/// Default output level: the demo phrase peaks near -6 dBFS (with the scale of OutputStage.h).
 inline constexpr float kDefaultOutputLevelDb = -12.0f;
 
 juce::AudioProcessorValueTreeState::ParameterLayout createParameterLayout();
@@ -52,8 +55,8 @@ struct ParameterSnapshot
 {
     gesture::GestureParameters gesture;
     InstrumentKey key;
-    double outputGain = 1.0; ///< linear, per N of bridge force
-    int stringChoice = 0;    ///< 0 auto, 1..4 = string I (highest) .. IV
+    OutputSettings output;
+    int stringChoice = 0; ///< 0 auto, 1..4 = string I (highest) .. IV
     bool intonationByEar = true;
 };
 
@@ -78,6 +81,8 @@ class ParameterReader
     std::atomic<float>* instrument_;
     std::atomic<float>* string_;
     std::atomic<float>* intonation_;
+    std::atomic<float>* output_;
+    std::atomic<float>* dcBlocker_;
 };
 
 } // namespace rosin::plugin

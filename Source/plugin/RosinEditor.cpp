@@ -10,7 +10,7 @@ namespace rosin::plugin
 namespace
 {
 constexpr int kHeaderHeight = 40;
-constexpr int kControlsHeight = 170;
+constexpr int kControlsHeight = 198; // two selector rows and the knobs
 const char* const kRoman[] = {"I", "II", "III", "IV", "V", "VI", "VII", "VIII"};
 } // namespace
 

@@ -19,7 +19,7 @@ class RosinProcessor;
 class RosinEditor : public juce::AudioProcessorEditor, private juce::Timer
 {
   public:
-    static constexpr int kDefaultWidth = 900, kDefaultHeight = 560;
+    static constexpr int kDefaultWidth = 900, kDefaultHeight = 588;
     static constexpr int kLanes = 4;
 
     explicit RosinEditor(RosinProcessor& processor);

@@ -8,7 +8,6 @@
 #include <thread>
 
 #include "RosinEditor.h"
-#include "SoftClip.h"
 #include "gesture/MidiBytes.h"
 
 namespace rosin::plugin
@@ -99,6 +98,8 @@ void RosinProcessor::setCurrentProgram(int index)
     setParameterValue(ids::ambientTemperature,
                       static_cast<float>(kCalibrationAmbientCelsius + preset.ambientOffset));
     setParameterValue(ids::beta, static_cast<float>(preset.beta));
+    setParameterValue(ids::outputLevel,
+                      static_cast<float>(preset.outputLevel.value_or(kDefaultOutputLevelDb)));
 }
 
 bool RosinProcessor::setProgramByName(const std::string& name)
@@ -154,7 +155,7 @@ void RosinProcessor::prepareToPlay(double sampleRate, int)
     const Engine& engine = *slot_.active();
     prepareGesture(engine);
     controllerSerial_ = engine.serial;
-    gain_.prepare(kGainSmoothingSeconds, sampleRate);
+    output_.prepare(sampleRate, kGainSmoothingSeconds);
     for (auto& d : detectors_)
         d.prepare(sampleRate);
     resetRequested_ = false;
@@ -233,6 +234,7 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
     {
         instrument.reset();
         controller_.reset();
+        output_.reset();
         for (auto& d : detectors_)
             d.reset();
         for (auto& ear : ears_)
@@ -280,13 +282,9 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
             detectors_[k].push(outputs_[k], inputs_[k].bowForce);
             ears_[k].listen(outputs_[k].sticking, outputs_[k].bowPointVelocity, outputs_[k].bowVelocity);
         }
-        y *= gain_.process(snapshot.outputGain);
-        if (!std::isfinite(y))
-        {
-            y = 0.0;
-            ++nonFinite;
-        }
-        out[i] = static_cast<float>(softClip(y));
+        bool bad = false;
+        out[i] = output_.process(instrument, y, snapshot.output, bad);
+        nonFinite += bad ? 1 : 0;
     }
     for (; event != end; ++event) // events stamped past the block's end (malformed host data)
     {

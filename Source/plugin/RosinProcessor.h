@@ -105,7 +105,7 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     long controllerSerial_ = -1;
     std::array<physics::BowInput, gesture::MidiGestureController::kMaxStrings> inputs_{};
     std::array<physics::VoiceSample, gesture::MidiGestureController::kMaxStrings> outputs_{};
-    gesture::OnePoleSmoother gain_;
+    OutputStage output_;
     std::atomic<bool> resetRequested_{false};
     // The destructor waits for a timer callback in flight (hosts may destroy us off the message thread).
     std::atomic<bool> closing_{false};

@@ -23,16 +23,31 @@ struct MidiOptions
     std::string midi, out = "rosin-midi.wav";
     std::string preset = "cello-plastic";
     std::string automation;
+    int output = 0; ///< index of plugin::outputChoiceNames()
+    bool dcBlocker = true;
     double sampleRate = 48000.0;
     int blockSize = 512;
     double tail = 2.0;
 };
 
+/// --output takes the first word of the plugin's choice names: radiated, force, velocity.
+int outputIndex(const std::string& v)
+{
+    const juce::StringArray names = plugin::outputChoiceNames();
+    for (int i = 0; i < names.size(); ++i)
+        if (names[i].upToFirstOccurrenceOf(" ", false, false) == juce::String(v) ||
+            names[i].fromFirstOccurrenceOf(" ", false, false) == juce::String(v))
+            return i;
+    throw config::ConfigError("--output", "", "radiated, force or velocity", "\"" + v + "\"");
+}
+
 MidiOptions parseMidiOptions(const std::vector<std::string>& args)
 {
     MidiOptions o;
-    const auto options = parseOptions(
-        args, {"--midi", "--out", "--preset", "--automation", "--sample-rate", "--block-size", "--tail"}, {});
+    const auto options = parseOptions(args,
+                                      {"--midi", "--out", "--preset", "--automation", "--output",
+                                       "--dc-blocker", "--sample-rate", "--block-size", "--tail"},
+                                      {});
     for (const Option& opt : options)
     {
         const std::string& v = opt.value.value_or("");
@@ -44,6 +59,14 @@ MidiOptions parseMidiOptions(const std::vector<std::string>& args)
             o.preset = v;
         else if (opt.name == "--automation")
             o.automation = v;
+        else if (opt.name == "--output")
+            o.output = outputIndex(v);
+        else if (opt.name == "--dc-blocker")
+        {
+            if (v != "on" && v != "off")
+                throw config::ConfigError(opt.name, "", "on or off", "\"" + v + "\"");
+            o.dcBlocker = v == "on";
+        }
         else if (opt.name == "--sample-rate")
         {
             o.sampleRate = parseNumber(opt.name, v);
@@ -72,6 +95,12 @@ MidiOptions parseMidiOptions(const std::vector<std::string>& args)
     return o;
 }
 
+void setPlainValue(plugin::RosinProcessor& processor, const char* id, float value)
+{
+    if (auto* p = processor.parameters().getParameter(id))
+        p->setValueNotifyingHost(p->convertTo0to1(value));
+}
+
 std::string fixed(double value, int digits)
 {
     char buffer[64];
@@ -91,6 +120,7 @@ bool isMidiRender(const std::vector<std::string>& args)
 std::string midiRenderHelp()
 {
     return "usage: rosin render --midi FILE.mid [--preset NAME] [--automation FILE.json] [--out FILE.wav]\n"
+           "                    [--output radiated|force|velocity] [--dc-blocker on|off]\n"
            "                    [--sample-rate HZ] [--block-size N] [--tail SECONDS]\n"
            "\n"
            "Plays a MIDI file through the plugin's own AudioProcessor (the cello or violin of the preset, "
@@ -101,6 +131,11 @@ std::string midiRenderHelp()
            "  --preset NAME            a factory program (default cello-plastic): one of the presets/ names\n"
            "  --automation FILE.json   parameter lanes, \"format\": \"rosin-automation/1\" (see README)\n"
            "  --out FILE.wav           default rosin-midi.wav\n"
+           "  --output WHAT            the plugin's Output parameter: radiated (the sound the body radiates "
+           "to a\n"
+           "                           listener at 1 m, default), force or velocity (at the bridge)\n"
+           "  --dc-blocker on|off      the plugin's DC blocker on the force and velocity outputs (default "
+           "on)\n"
            "  --sample-rate HZ         integer 8000..384000 (default 48000)\n"
            "  --block-size N           host block size 1..65536 (default 512); the output does not depend on "
            "it\n"
@@ -129,6 +164,8 @@ int runMidiRender(const std::vector<std::string>& args, std::ostream& out, std::
         throw config::ConfigError("--preset", "", "a factory program (one of " + names + ")",
                                   "\"" + o.preset + "\"");
     }
+    setPlainValue(processor, plugin::ids::output, static_cast<float>(o.output));
+    setPlainValue(processor, plugin::ids::dcBlocker, o.dcBlocker ? 1.0f : 0.0f);
     plugin::MidiRenderSettings settings;
     settings.sampleRate = o.sampleRate;
     settings.blockSize = o.blockSize;
@@ -139,7 +176,9 @@ int runMidiRender(const std::vector<std::string>& args, std::ostream& out, std::
         plugin::renderMidi(processor, sequence, settings, automation ? &*automation : nullptr);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
 
-    WavWriter wav(o.out, o.sampleRate, 1, "rosin plugin output, program " + o.preset);
+    WavWriter wav(o.out, o.sampleRate, 1,
+                  "rosin plugin output (" + plugin::outputChoiceNames()[o.output].toStdString() +
+                      "), program " + o.preset);
     const float* channel = result.audio.data();
     wav.write(&channel, static_cast<int>(result.audio.size()));
     wav.close();

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "CommandLine.h"
+#include "ListeningOutput.h"
 #include "LoopOutput.h"
 #include "OfflineRender.h"
 #include "ProbeChannels.h"
@@ -30,7 +31,7 @@ namespace rosin::cli
 namespace
 {
 constexpr gesture::Range kSampleRate{8000.0, 384000.0, "Hz"};
-constexpr gesture::Range kScale{0.0, 1e9, "1/N", true};
+constexpr gesture::Range kScale{0.0, 1e9, "per unit of the --output quantity", true};
 constexpr double kDefaultSampleRate = 48000.0;
 constexpr double kPeakTarget = 0.8912509381337456; // -1 dBFS: the listening file never clips when converted
 const char* const kDefaultOut = "rosin-render.wav";
@@ -39,7 +40,7 @@ struct RenderOptions
 {
     std::string gesture = "steady";
     std::string out = kDefaultOut;
-    std::optional<std::string> probe, preset, friction, body;
+    std::optional<std::string> probe, preset, friction, body, output;
     double sampleRate = kDefaultSampleRate;
     std::optional<double> scale;
     std::optional<LoopRequest> loop;
@@ -50,8 +51,8 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args)
 {
     RenderOptions o;
     const auto options = parseOptions(args,
-                                      {"--gesture", "--out", "--probe", "--preset", "--friction", "--body",
-                                       "--sample-rate", "--scale", "--loop", "--loop-interval"},
+                                      {"--gesture", "--out", "--output", "--probe", "--preset", "--friction",
+                                       "--body", "--sample-rate", "--scale", "--loop", "--loop-interval"},
                                       {"--help", "-h"});
     for (const Option& opt : options)
     {
@@ -62,6 +63,11 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args)
             o.gesture = v;
         else if (opt.name == "--out")
             o.out = v;
+        else if (opt.name == "--output")
+        {
+            outputQuantityFromName(v); // checked here, before any work
+            o.output = v;
+        }
         else if (opt.name == "--probe")
             o.probe = v;
         else if (opt.name == "--preset")
@@ -193,12 +199,14 @@ std::string renderHelp()
                       c.unit, c.what);
         channels += line;
     }
-    return "usage: rosin render [--gesture SPEC|FILE.json] [--out FILE.wav] [--probe FILE.wav]\n"
+    return "usage: rosin render [--gesture SPEC|FILE.json] [--out FILE.wav] [--output WHAT] [--probe "
+           "FILE.wav]\n"
            "                    [--preset NAME|FILE.json] [--friction LAW] [--body BODY]\n"
            "                    [--sample-rate HZ] [--scale S] [--loop FILE.png [--loop-interval A:B]]\n"
            "\n"
-           "Drives one bowed-string voice with a bow gesture and writes the force of the string on the "
-           "bridge.\n"
+           "Drives one bowed-string voice with a bow gesture and writes what a listener hears (or the lab's "
+           "bridge\n"
+           "force or velocity).\n"
            "\n"
            "options:\n"
            "  --gesture SPEC|FILE.json the bow gesture (default: steady). Built-in gestures:\n" +
@@ -211,12 +219,16 @@ std::string renderHelp()
            "first "
            "segment:\n"
            "                           force 1 N, speed 0 (bow at rest), the preset's beta, finger 1.\n"
-           "  --out FILE.wav           the bridge force, mono 32-bit float, scaled for listening\n"
+           "  --out FILE.wav           the --output quantity, mono 32-bit float, scaled for listening\n"
            "                           (default: " +
            kDefaultOut +
            "); the scale is printed\n"
-           "  --scale S                fixed scale of --out in 1/N (sample = S x force); default: the peak "
-           "is\n"
+           "  --output WHAT            radiated (default): the sound pressure the body radiates to 1 m "
+           "(Pa);\n"
+           "                           force: the bridge force (N); velocity: the bridge velocity (m/s).\n"
+           "                           On a rigid bridge the string is heard through its family's body.\n"
+           "  --scale S                fixed scale of --out per unit of that quantity (sample = S x value);\n"
+           "                           default: the peak is\n"
            "                           normalised to -1 dBFS\n"
            "  --probe FILE.wav         also write internal channels, 32-bit float, physical SI values (not\n"
            "                           normalised), 5 channels in this order:\n" +
@@ -277,6 +289,9 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
         throw config::ConfigError("--body", "",
                                   "no --body with a rig preset (its \"rig\" replaces string and body)",
                                   "\"" + *o.body + "\"");
+    if (preset.rig && o.output && *o.output != "force")
+        throw config::ConfigError("--output", "", "force with a rig preset (a rig has no body to radiate)",
+                                  "\"" + *o.output + "\"");
     const config::VoiceSetup setup = config::buildVoiceSetup(preset);
     gesture::GestureStart start;
     start.beta = preset.beta;
@@ -302,7 +317,8 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
     out << "gesture " << o.gesture << ": " << script.segments.size() << " segment(s), " << bow.totalSamples()
         << " samples at " << o.sampleRate << " Hz (" << fixed(script.totalSeconds(), 6) << " s)\n";
 
-    WavWriter audioFile(o.out, o.sampleRate, 1, "rosin bridge force, scaled for listening");
+    ListeningOutput listening(outputQuantityFromName(o.output.value_or("radiated")), preset, o.sampleRate);
+    WavWriter audioFile(o.out, o.sampleRate, 1, "rosin " + listening.describe() + ", scaled for listening");
     std::optional<WavWriter> probeFile;
     if (o.probe)
         probeFile.emplace(*o.probe, o.sampleRate, static_cast<int>(kProbeChannels.size()), probeComment());
@@ -316,7 +332,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
                       [&](const physics::VoiceSample* s, int n)
                       {
                           for (int i = 0; i < n; ++i)
-                              bridge.push_back(static_cast<float>(s[i].bridgeForce));
+                              bridge.push_back(static_cast<float>(listening.next(s[i].bridgeForce)));
                           for (int i = 0; loop && i < n; ++i)
                               loop->add(s[i]);
                           if (!probeFile)
@@ -339,8 +355,10 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
                       });
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
 
-    const double scale =
-        o.scale ? *o.scale : (stats.peakBridgeForce > 0.0 ? kPeakTarget / stats.peakBridgeForce : 1.0);
+    float peak = 0.0f;
+    for (float x : bridge)
+        peak = std::max(peak, std::abs(x));
+    const double scale = o.scale ? *o.scale : (peak > 0.0f ? kPeakTarget / peak : 1.0);
     for (float& x : bridge)
         x = static_cast<float>(x * scale);
     const float* channel = bridge.data();
@@ -355,8 +373,9 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
     if (stats.maxContactTemperature > 0.0)
         out << ", peak contact temperature " << fixed(stats.maxContactTemperature, 4) << " K above ambient";
     out << "\n";
-    out << "wrote " << o.out << ": bridge force x " << fixed(scale, 8) << " /N ("
-        << (o.scale ? "scale from --scale" : "peak normalised to -1 dBFS") << "), 1 channel, 32-bit float\n";
+    out << "wrote " << o.out << ": " << listening.describe() << " x " << fixed(scale, 8) << " /"
+        << listening.unit() << " (" << (o.scale ? "scale from --scale" : "peak normalised to -1 dBFS")
+        << "), 1 channel, 32-bit float\n";
     if (probeFile)
     {
         out << "wrote " << *o.probe << ": " << kProbeChannels.size()

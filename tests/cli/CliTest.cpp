@@ -14,6 +14,7 @@
 
 #include "Dispatcher.h"
 #include "config/TempFiles.h"
+#include "physics/body/BridgeBody.h"
 
 namespace
 {
@@ -91,6 +92,8 @@ TEST_F(Cli, HelpDocumentsEveryCommandAndOption)
     EXPECT_EQ(help.status, 0);
     for (const char* text : {"--gesture",
                              "--out",
+                             "--output",
+                             "radiated",
                              "--probe",
                              "--preset",
                              "--friction",
@@ -196,7 +199,7 @@ TEST_F(Cli, UnwritableOutputIsAnErrorNamingTheFile)
 TEST_F(Cli, RenderWritesAudioAndAFiveChannelProbe)
 {
     const Result r = rosin({"render", "--gesture", "guettler:seconds=0.1", "--sample-rate", "44100", "--out",
-                            "a.wav", "--probe", "p.wav"});
+                            "a.wav", "--output", "force", "--probe", "p.wav"});
     ASSERT_EQ(r.status, 0) << r.err;
     // The channel list is printed, names and units in file order.
     const auto at = [&](const char* s) { return r.out.find(s); };
@@ -241,6 +244,36 @@ TEST_F(Cli, RenderWritesAudioAndAFiveChannelProbe)
     for (int i = 0; i < 4410; ++i)
         ASSERT_NEAR(audio.data.getSample(0, i), scale * probe.data.getSample(0, i), 1e-5) << i;
     EXPECT_GT(probe.data.getMagnitude(4, 0, 4410), 0.0f); // plastic friction heats the contact
+}
+
+// By default --out is what a listener hears: the probe's bridge force through the preset's body
+// (BodyRadiation.h), one scale for the whole file; a second body, fed the probe's force, gives the same.
+TEST_F(Cli, RenderWritesTheRadiatedSoundByDefault)
+{
+    const Result r =
+        rosin({"render", "--gesture", "guettler:seconds=0.1", "--out", "a.wav", "--probe", "p.wav"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto printed = r.out.find("sound pressure at 1 m radiated by the cello body x ");
+    ASSERT_NE(printed, std::string::npos) << r.out;
+    const Wav audio = readWav(dir.path() + "/a.wav");
+    const Wav probe = readWav(dir.path() + "/p.wav");
+    rosin::physics::BridgeBody body;
+    body.configure(rosin::physics::celloBody(), 48000.0, 2.0 * 3.141592653589793 * 0.45 * 48000.0);
+    std::vector<double> pressure;
+    double peak = 0.0;
+    for (int i = 0; i < probe.samples; ++i)
+    {
+        body.advance(probe.data.getSample(0, i));
+        pressure.push_back(body.radiatedPressure());
+        peak = std::max(peak, std::abs(pressure.back()));
+    }
+    ASSERT_GT(peak, 0.0);
+    const double scale = 0.8912509381337456 / peak;
+    for (int i = 0; i < probe.samples; ++i)
+        ASSERT_NEAR(audio.data.getSample(0, i), scale * pressure[static_cast<std::size_t>(i)], 1e-4) << i;
+    EXPECT_NE(
+        rosin({"render", "--gesture", "steady:seconds=0.01", "--output", "loudness"}).err.find("--output"),
+        std::string::npos);
 }
 
 TEST_F(Cli, RendersAGestureScript)

@@ -6,6 +6,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "BodyRadiation.h"
+
 // Body = a few parametric low "signature" modes (reference §5.2) + a statistical set above a crossover
 // (reference §5.3). Every number below is an engineering estimate [A]/[M] unless tagged otherwise: no
 // verified cello or violin modal table was available (reference §10 Q5). Replace with fitted data when
@@ -108,20 +110,39 @@ void appendStatisticalModes(std::vector<BodyMode>& modes, const StatisticalRecip
     }
 }
 
+/// Radiation of the statistical and band modes (BodyRadiation.h): sigma from the efficiency curve; the sign
+/// of a statistical mode's net volume velocity is as random as its shape (drawn from a generator of its own,
+/// so the modes themselves stay those of the seed); a band mode stands for the mean of many and keeps +1.
+void assignRadiation(BodyParameters& body, std::size_t firstStatistical, double denseLimitHz,
+                     std::uint32_t seed)
+{
+    PortableRandom signs(seed ^ 0x5eed51u);
+    for (std::size_t k = firstStatistical; k < body.modes.size(); ++k)
+    {
+        BodyMode& m = body.modes[k];
+        m.radiationEfficiency = statisticalRadiationEfficiency(body.radiation, m.frequency);
+        m.radiationSign = m.frequency < denseLimitHz && signs.uniform() < 0.5 ? -1.0 : 1.0;
+    }
+}
+
 BodyParameters assemble(const char* name, const std::vector<BodyMode>& lowModes, const StatisticalRecipe& r,
-                        std::uint32_t seed, double maxFrequencyHz, bool denseModes)
+                        const BodyRadiation& radiation, std::uint32_t seed, double maxFrequencyHz,
+                        bool denseModes)
 {
     if (!(maxFrequencyHz > 0.0) || !std::isfinite(maxFrequencyHz))
         throw std::invalid_argument("body: maxFrequencyHz must be positive and finite");
     BodyParameters body;
     body.name = name;
+    body.radiation = radiation;
     for (const auto& m : lowModes)
         if (m.frequency < maxFrequencyHz)
             body.modes.push_back(m);
+    const std::size_t firstStatistical = body.modes.size();
     const double denseLimit = denseModes ? maxFrequencyHz : std::min(r.denseLimitHz, maxFrequencyHz);
     appendStatisticalModes(body.modes, r, seed, denseLimit);
     if (denseLimit < maxFrequencyHz)
         appendBandModes(body.modes, r, denseLimit, maxFrequencyHz);
+    assignRadiation(body, firstStatistical, denseLimit, seed);
     return body;
 }
 
@@ -134,13 +155,19 @@ BodyParameters assemble(const char* name, const std::vector<BodyMode>& lowModes,
 //  * every other low mode stays below ~0.07 N; between modes (e.g. 120 Hz) Re Y ~ 1e-3 s/kg -> F_min ~ 1 mN.
 // Scaled peak admittance Z0 Re Y ~ 0.09 here vs ~0.05 for the violin set below (Z0 ~ 0.3 kg/s on its G
 // string): ~5 dB higher for the cello, as reported in reference §5.2 [V2: EUPH 9.4].
+// Radiation (fourth and fifth numbers: sigma and the sign of the net volume velocity; BodyRadiation.h): the
+// cello's signature modes are the violin's scaled ~2.1x in size, so each has the violin homologue's ka and
+// its radiation efficiency [A]: B1- 0.12 and B1+ 0.11 (Bissinger 2008), C1 and CBR, which move little net
+// volume, at Bissinger's low end (0.004 and 0.01). A0 radiates through the f-holes, not through corpus
+// motion; its sigma is set so that half its losses are radiation [A] (0.5 rho_s omega / (rho0 c0 Q)).
 const std::vector<BodyMode> celloLowModes = {
-    {62.0, 30.0, 2.0},  // C1: neck/body bending; weak at the bridge (large mass)
-    {102.0, 30.0, 1.5}, // A0: Helmholtz-like air mode, weak at the bridge
-    {150.0, 30.0, 0.9}, // C2 / CBR: kept weak (F_min ~ 0.07 N) so the open D3 (146.8 Hz) has no wolf
-    {176.0, 35.0, 0.5}, // B1- (T1): first corpus bending, lower
-    {194.0, 40.0, 0.2}, // B1+ (C3): strongest at the bridge -> the wolf near F#3-G3
-    {290.0, 30.0, 0.8}, // a further corpus mode (reference §5.2: 250-700 Hz, m 0.3-2 kg)
+    {62.0, 30.0, 2.0, 0.004, 1.0},  // C1: neck/body bending; weak at the bridge (large mass)
+    {102.0, 30.0, 1.5, 0.062, 1.0}, // A0: Helmholtz-like air mode, weak at the bridge
+    // C2 / CBR: kept weak (F_min ~ 0.07 N) so the open D3 (146.8 Hz) has no wolf
+    {150.0, 30.0, 0.9, 0.01, -1.0},
+    {176.0, 35.0, 0.5, 0.12, 1.0},  // B1- (T1): first corpus bending, lower
+    {194.0, 40.0, 0.2, 0.11, 1.0},  // B1+ (C3): strongest at the bridge -> the wolf near F#3-G3
+    {290.0, 30.0, 0.8, 0.145, 1.0}, // a further corpus mode (reference §5.2: 250-700 Hz, m 0.3-2 kg)
 };
 
 // Cello statistical set [D with A inputs; reference §5.3 and body.py]:
@@ -153,15 +180,20 @@ const std::vector<BodyMode> celloLowModes = {
 //  * eta = 0.025 at 1 kHz rising as f^0.3 (0.021 at 550 Hz, 0.05 at 10 kHz).
 constexpr StatisticalRecipe celloRecipe{550.0, 0.07, 0.015, 1600.0, 1.3, 0.025, 0.3, 1200.0};
 
+// Cello radiation [A]: plates ~4.5 mm thick, spruce top (~450 kg/m^3) 2.0 kg/m^2 and maple back (~650 kg/m^3)
+// 2.9 kg/m^2, mean rho_s 2.4 kg/m^2 (wood handbook densities); the violin's efficiency and directivity
+// curves scaled down by the length ratio 2.1 (BodyRadiation.h); listener at 1 m.
+constexpr BodyRadiation celloRadiation{2.4, 1.0, 2000.0, 1900.0};
+
 // Violin low modes [A, from violin-family literature ranges]: A0 ~ 275 Hz, CBR ~ 405 Hz, B1- ~ 465 Hz,
 // B1+ ~ 540 Hz, lighter than the cello's. B1+ peak Re Y = 40 / (0.07 * 2 pi 540) = 0.17 s/kg.
 const std::vector<BodyMode> violinLowModes = {
-    {185.0, 20.0, 0.8},  // C1: neck/body bending, weak at the bridge
-    {275.0, 20.0, 0.5},  // A0: air mode
-    {405.0, 40.0, 0.35}, // CBR: centre-bout rhomboid, weak at the bridge
-    {465.0, 40.0, 0.12}, // B1-
-    {540.0, 40.0, 0.07}, // B1+: strongest at the bridge
-    {640.0, 35.0, 0.25}, // a further corpus mode
+    {185.0, 20.0, 0.8, 0.004, 1.0},  // C1: neck/body bending, weak at the bridge
+    {275.0, 20.0, 0.5, 0.162, 1.0},  // A0: air mode (sigma: half its losses radiated, as the cello's)
+    {405.0, 40.0, 0.35, 0.01, -1.0}, // CBR: centre-bout rhomboid, weak at the bridge
+    {465.0, 40.0, 0.12, 0.12, 1.0},  // B1-
+    {540.0, 40.0, 0.07, 0.11, 1.0},  // B1+: strongest at the bridge
+    {640.0, 35.0, 0.25, 0.152, 1.0}, // a further corpus mode
 };
 
 // Violin statistical set [D with A inputs]: equivalent plates (top 2.8 mm spruce, back 3 mm maple, ~0.055 m^2
@@ -169,6 +201,10 @@ const std::vector<BodyMode> violinLowModes = {
 // 0.035 s/kg (<m> ~ 0.16 kg); crossover 750 Hz; bridge hill at 2.6 kHz with Q_h = 1.5 (peak Re Y_skel
 // 0.08 s/kg, effective bridge mass ~1 g), inside the 2-3 kHz range of reference §5.3 item 5.
 constexpr StatisticalRecipe violinRecipe{750.0, 0.023, 0.035, 2600.0, 1.5, 0.025, 0.3, 1500.0};
+
+// Violin radiation [A]: top 2.8 mm spruce 1.2 kg/m^2, back 3 mm maple 1.9 kg/m^2, mean rho_s 1.55 kg/m^2;
+// sigma reaches 1 at 4.2 kHz and directivity 2 at 4 kHz (Bissinger 2008, BodyRadiation.h); listener at 1 m.
+constexpr BodyRadiation violinRadiation{1.55, 1.0, 4200.0, 4000.0};
 
 } // namespace
 
@@ -193,12 +229,13 @@ BodyParameters rigidBody()
 
 BodyParameters celloBody(std::uint32_t seed, double maxFrequencyHz, bool denseModes)
 {
-    return assemble("cello", celloLowModes, celloRecipe, seed, maxFrequencyHz, denseModes);
+    return assemble("cello", celloLowModes, celloRecipe, celloRadiation, seed, maxFrequencyHz, denseModes);
 }
 
 BodyParameters violinBody(std::uint32_t seed, double maxFrequencyHz, bool denseModes)
 {
-    return assemble("violin", violinLowModes, violinRecipe, seed, maxFrequencyHz, denseModes);
+    return assemble("violin", violinLowModes, violinRecipe, violinRadiation, seed, maxFrequencyHz,
+                    denseModes);
 }
 
 BodyParameters bodyByName(const std::string& name)

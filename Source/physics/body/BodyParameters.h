@@ -15,12 +15,26 @@ struct BodyMode
     double frequency = 0.0;     ///< Hz
     double q = 30.0;            ///< quality factor
     double effectiveMass = 1.0; ///< kg, modal mass at the bridge notch
+    /// sigma: radiated power / (rho0 c0 S <v^2>), 0 for a mode that does not radiate (BodyRadiation.h).
+    double radiationEfficiency = 0.0;
+    /// +1 or -1: the sign of the mode's net volume velocity relative to its bridge motion.
+    double radiationSign = 1.0;
+};
+
+/// What the body's radiation depends on besides its modes (BodyRadiation.h).
+struct BodyRadiation
+{
+    double surfaceDensity = 2.0;       ///< rho_s, kg/m^2: mean mass per area of the plates
+    double listeningDistance = 1.0;    ///< r, m
+    double unityEfficiencyHz = 4200.0; ///< statistical modes radiate with sigma = min(1, f / this)
+    double directivityHz = 4000.0;     ///< D(f) = min(2, 1 + f / this)
 };
 
 struct BodyParameters
 {
     std::string name = "rigid";  ///< "cello", "violin", "rigid", ...
     std::vector<BodyMode> modes; ///< empty means a rigid bridge
+    BodyRadiation radiation;
     bool rigid() const { return modes.empty(); }
     /// The modal formula (5.2) evaluated at frequency f (Hz): bridge velocity per unit force, s/kg.
     std::complex<double> admittance(double frequencyHz) const;

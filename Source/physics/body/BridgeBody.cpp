@@ -1,6 +1,9 @@
 #include "BridgeBody.h"
 
+#include "BodyRadiation.h"
+
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 namespace rosin::physics
@@ -9,6 +12,7 @@ namespace rosin::physics
 void BridgeBody::configure(const BodyParameters& body, double sampleRate, double modeLimit)
 {
     std::vector<ModeSpec> specs;
+    std::vector<double> radiation; // c_k, Pa per m/s^2
     gain_.clear();
     for (const auto& mode : body.modes)
     {
@@ -17,17 +21,21 @@ void BridgeBody::configure(const BodyParameters& body, double sampleRate, double
             continue;
         specs.push_back({omega, 1.0 / mode.q});
         gain_.push_back(1.0 / mode.effectiveMass);
+        radiation.push_back(pressurePerAcceleration(mode, body.radiation));
     }
     while (!specs.empty() && specs.size() % 8 != 0)
     {
         specs.push_back(specs.back());
         gain_.push_back(0.0); // silent padding: never driven, so its state stays zero
+        radiation.push_back(0.0);
     }
     bank_.configure(specs, sampleRate);
+    lowpassCoefficient_ =
+        -std::expm1(-2.0 * std::numbers::pi * body.radiation.unityEfficiencyHz / sampleRate);
     gainIn_.assign(gain_.begin(), gain_.end());
-    for (auto* o : {&u_, &ud_, &udd_})
+    for (auto* o : {&u_, &ud_, &udd_, &p_})
         o->assign(bank_.size());
-    U0_ = U1_ = U2_ = 0.0;
+    U0_ = U1_ = U2_ = P0_ = 0.0;
     for (int j = 0; j < bank_.size(); ++j)
     {
         const auto rd = 2.0 * bank_.residue(j, ModalOutput::Displacement);
@@ -36,9 +44,11 @@ void BridgeBody::configure(const BodyParameters& body, double sampleRate, double
         u_.set(j, rd);
         ud_.set(j, rv);
         udd_.set(j, ra);
+        p_.set(j, ra * radiation[static_cast<std::size_t>(j)]);
         U0_ += bank_.direct(j, ModalOutput::Displacement) * gain_[j];
         U1_ += bank_.direct(j, ModalOutput::Velocity) * gain_[j];
         U2_ += bank_.direct(j, ModalOutput::Acceleration) * gain_[j];
+        P0_ += bank_.direct(j, ModalOutput::Acceleration) * gain_[j] * radiation[static_cast<std::size_t>(j)];
     }
     reset();
 }
@@ -46,7 +56,8 @@ void BridgeBody::configure(const BodyParameters& body, double sampleRate, double
 void BridgeBody::reset() noexcept
 {
     bank_.reset();
-    uh_ = udh_ = uddh_ = lastForce_ = 0.0;
+    uh_ = udh_ = uddh_ = ph_ = lastForce_ = 0.0;
+    pressureNow_ = velocityNow_ = compactPressure_ = 0.0;
 }
 
 void BridgeBody::advance(double bridgeForce) noexcept
@@ -54,8 +65,12 @@ void BridgeBody::advance(double bridgeForce) noexcept
     lastForce_ = bridgeForce;
     if (bank_.size() == 0)
         return;
+    compactPressure_ = ph_ + P0_ * bridgeForce;
+    pressureNow_ += lowpassCoefficient_ * (compactPressure_ - pressureNow_);
+    velocityNow_ = udh_ + U1_ * bridgeForce;
     const ThreeSums s = advanceOneInputThreeOutputs(bank_, gainIn_.data(), bridgeForce, u_, ud_, udd_);
     uh_ = s.first, udh_ = s.second, uddh_ = s.third;
+    ph_ = sumOutput(bank_, p_);
 }
 
 int BridgeBody::modeCount() const noexcept

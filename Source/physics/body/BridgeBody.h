@@ -2,7 +2,9 @@
 // The body as a discrete modal system driven by the bridge force (reference eq. 5.2 and §5.1): one or several
 // strings push the bridge with force F; the body answers with a bridge displacement u, velocity u' and
 // acceleration u''. Each output is "history + direct * F" for the current sample, which is what the strings'
-// junction solves need. Real-time contract: configure() allocates; reset() and advance() do not.
+// junction solves need. The same modes also give what a listener hears: the radiated sound pressure, a
+// weighted sum of the modes' accelerations (BodyRadiation.h). Real-time contract: configure() allocates;
+// reset() and advance() do not.
 #include "../modal/ModalKernels.h"
 #include "BodyParameters.h"
 
@@ -31,6 +33,11 @@ class BridgeBody
     double velocityDirect() const noexcept { return U1_; }
     double accelerationDirect() const noexcept { return U2_; }
 
+    /// Sound pressure at the listener (Pa) and bridge velocity (m/s) of the sample last advanced: its history
+    /// plus its direct response to that sample's force.
+    double radiatedPressure() const noexcept { return pressureNow_; }
+    double bridgeVelocity() const noexcept { return velocityNow_; }
+
     /// Bridge displacement (m) and stored energy (J) at the last advanced sample.
     double displacementAtLastStep() const noexcept;
     double velocityAtLastStep() const noexcept;
@@ -47,9 +54,12 @@ class BridgeBody
     ModalBank bank_;
     std::vector<double> gain_;      ///< 1/m_k, 0 for padding
     std::vector<ModalReal> gainIn_; ///< gain_ in the modal kernels' number type
-    OutputWeights u_, ud_, udd_;
-    double uh_ = 0, udh_ = 0, uddh_ = 0;
-    double U0_ = 0, U1_ = 0, U2_ = 0;
+    OutputWeights u_, ud_, udd_, p_;
+    double uh_ = 0, udh_ = 0, uddh_ = 0, ph_ = 0;
+    double U0_ = 0, U1_ = 0, U2_ = 0, P0_ = 0;
+    double pressureNow_ = 0, velocityNow_ = 0;
+    double lowpassCoefficient_ = 1.0; ///< the one-pole H of BodyRadiation.h, impulse invariant
+    double compactPressure_ = 0;      ///< the modes' sum before H
     double lastForce_ = 0;
 };
 

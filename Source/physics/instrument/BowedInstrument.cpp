@@ -12,6 +12,7 @@ InstrumentConfig celloInstrument()
     for (const char* s : {"cello-C2", "cello-G2", "cello-D3", "cello-A3"})
         c.strings.push_back(stringFromCatalogue(s));
     c.body = celloBody();
+    c.soundBody = c.body;
     return c;
 }
 
@@ -22,6 +23,7 @@ InstrumentConfig violinInstrument()
     for (const char* s : {"violin-G3", "violin-D4", "violin-A4", "violin-E5-instrument"})
         c.strings.push_back(stringFromCatalogue(s));
     c.body = violinBody();
+    c.soundBody = c.body;
     c.contact = schumacherContact();
     return c;
 }
@@ -31,8 +33,10 @@ void BowedInstrument::prepare(const InstrumentConfig& config, double sampleRate)
     config_ = config;
     voices_.clear();
     VoiceConfig reference;
-    body_.configure(config.body, sampleRate,
-                    2.0 * std::numbers::pi * reference.maxModeFrequencyRatio * sampleRate);
+    const double modeLimit = 2.0 * std::numbers::pi * reference.maxModeFrequencyRatio * sampleRate;
+    body_.configure(config.body, sampleRate, modeLimit);
+    listeningBody_.configure(config.body.rigid() ? config.soundBody : BodyParameters{}, sampleRate,
+                             modeLimit);
     for (const auto& s : config.strings)
     {
         VoiceConfig vc;
@@ -51,6 +55,7 @@ void BowedInstrument::reset() noexcept
     for (auto& v : voices_)
         v->reset();
     body_.reset();
+    listeningBody_.reset();
     lastTotal_ = 0.0;
     recovered_ = false;
 }
@@ -77,9 +82,15 @@ double BowedInstrument::step(const BowInput* inputs, VoiceSample* outputs) noexc
         total += voices_[i]->lastBridgeForce();
     }
     if (recovered_)
+    {
         body_.reset(); // a string blew up and reset: start the bridge afresh too
+        listeningBody_.reset();
+    }
     else
+    {
         body_.advance(G);
+        listeningBody_.advance(G);
+    }
     lastTotal_ = recovered_ ? 0.0 : G;
     return total;
 }

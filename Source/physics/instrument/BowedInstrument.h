@@ -7,8 +7,9 @@
 // hears the body's motion, so a bowed string sets the others ringing (sympathetic resonance) and the body is
 // computed once. Each string's junction predicts the other strings' bridge force from the previous sample;
 // once all junctions are solved the total bridge force follows exactly, and every string and the body are
-// driven with it, so the linear system stays the exact discretised one (and passive). The output is the total
-// bridge force.
+// driven with it, so the linear system stays the exact discretised one (and passive). Outputs: the total
+// bridge force, and what a listener hears, the sound the body radiates (BodyRadiation.h), with the bridge
+// velocity beside it.
 // Real-time contract as for BowedStringVoice: prepare() allocates; reset() and step() never allocate, lock or
 // call the system.
 #include <memory>
@@ -27,6 +28,9 @@ struct InstrumentConfig
     std::string name = "cello";            ///< "cello", "violin", or a preset's name
     std::vector<StringParameters> strings; ///< lowest to highest
     BodyParameters body;                   ///< shared bridge admittance (rigid when empty)
+    /// The body the listener hears the strings through when `body` is rigid: the strings then see a rigid
+    /// bridge (the lab's condition) and this body is driven one way by their force. Unused otherwise.
+    BodyParameters soundBody;
     bool torsion = true;
     bool bendingStiffness = true;
     FrictionModel friction = FrictionModel::Plastic;
@@ -45,8 +49,12 @@ class BowedInstrument
     void prepare(const InstrumentConfig& config, double sampleRate);
     void reset() noexcept;
     /// Advance all strings one sample. `inputs` and `outputs` hold stringCount() entries. Returns the total
-    /// bridge force (N), the instrument's audio output.
+    /// bridge force (N).
     double step(const BowInput* inputs, VoiceSample* outputs) noexcept;
+    /// Sound pressure at the listener (Pa) and bridge velocity (m/s) of the last step, from the shared body
+    /// or, on a rigid bridge, from soundBody driven one way.
+    double radiatedPressure() const noexcept { return sounding().radiatedPressure(); }
+    double bridgeVelocity() const noexcept { return sounding().bridgeVelocity(); }
 
     int stringCount() const noexcept { return static_cast<int>(voices_.size()); }
     const InstrumentConfig& config() const noexcept { return config_; }
@@ -63,6 +71,8 @@ class BowedInstrument
     InstrumentConfig config_;
     std::vector<std::unique_ptr<BowedStringVoice>> voices_;
     BridgeBody body_;
+    BridgeBody listeningBody_; ///< soundBody, when body_ is rigid
+    const BridgeBody& sounding() const noexcept { return body_.rigid() ? listeningBody_ : body_; }
     double lastTotal_ = 0.0; ///< total bridge force of the last sample, N
     bool recovered_ = false;
 };

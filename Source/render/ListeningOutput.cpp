@@ -1,0 +1,77 @@
+#include "ListeningOutput.h"
+
+#include <numbers>
+
+#include "config/ConfigError.h"
+#include "physics/body/BodyParameters.h"
+#include "physics/voice/VoiceConfig.h"
+
+namespace rosin::cli
+{
+
+OutputQuantity outputQuantityFromName(const std::string& name)
+{
+    if (name == "radiated")
+        return OutputQuantity::Radiated;
+    if (name == "force")
+        return OutputQuantity::Force;
+    if (name == "velocity")
+        return OutputQuantity::Velocity;
+    throw config::ConfigError("--output", "", "radiated, force or velocity", "\"" + name + "\"");
+}
+
+namespace
+{
+std::string listeningBodyName(const config::Preset& preset)
+{
+    if (preset.body != "rigid")
+        return preset.body;
+    return preset.string.name.rfind("violin", 0) == 0 ? "violin" : "cello";
+}
+} // namespace
+
+ListeningOutput::ListeningOutput(OutputQuantity quantity, const config::Preset& preset, double sampleRate)
+    : quantity_(quantity), bodyName_(listeningBodyName(preset))
+{
+    const physics::VoiceConfig reference;
+    body_.configure(physics::bodyByName(bodyName_), sampleRate,
+                    2.0 * std::numbers::pi * reference.maxModeFrequencyRatio * sampleRate);
+}
+
+double ListeningOutput::next(double bridgeForce) noexcept
+{
+    if (quantity_ == OutputQuantity::Force)
+        return bridgeForce;
+    body_.advance(bridgeForce);
+    return quantity_ == OutputQuantity::Radiated ? body_.radiatedPressure() : body_.bridgeVelocity();
+}
+
+std::string ListeningOutput::describe() const
+{
+    switch (quantity_)
+    {
+    case OutputQuantity::Force:
+        return "bridge force";
+    case OutputQuantity::Velocity:
+        return "bridge velocity of the " + bodyName_ + " body";
+    case OutputQuantity::Radiated:
+        break;
+    }
+    return "sound pressure at 1 m radiated by the " + bodyName_ + " body";
+}
+
+const char* ListeningOutput::unit() const noexcept
+{
+    switch (quantity_)
+    {
+    case OutputQuantity::Force:
+        return "N";
+    case OutputQuantity::Velocity:
+        return "m/s";
+    case OutputQuantity::Radiated:
+        break;
+    }
+    return "Pa";
+}
+
+} // namespace rosin::cli
