@@ -11,11 +11,14 @@ namespace
 {
 constexpr int kHeaderHeight = 40;
 constexpr int kControlsHeight = 198; // two selector rows and the knobs
+constexpr int kKeyboardHeight = 60;
+constexpr int kLowestKey = 36, kHighestKey = 100; // cello C2 to the violin's E7
 const char* const kRoman[] = {"I", "II", "III", "IV", "V", "VI", "VII", "VIII"};
 } // namespace
 
 RosinEditor::RosinEditor(RosinProcessor& processor)
-    : juce::AudioProcessorEditor(processor), processor_(processor), controls_(processor.parameters())
+    : juce::AudioProcessorEditor(processor), processor_(processor), controls_(processor.parameters()),
+      keyboard_(processor.keyboardState(), juce::MidiKeyboardComponent::horizontalKeyboard)
 {
     addAndMakeVisible(controls_);
     // Lanes top to bottom: string I (highest) first, as a player reads them.
@@ -25,8 +28,14 @@ RosinEditor::RosinEditor(RosinProcessor& processor)
         addAndMakeVisible(*lanes_[static_cast<std::size_t>(i)]);
     }
     addAndMakeVisible(schelleng_);
+    keyboard_.setAvailableRange(kLowestKey, kHighestKey);
+    keyboard_.setLowestVisibleKey(kLowestKey);
+    keyboard_.setOctaveForMiddleC(4);   // MIDI 60 = C4, as the README names notes (C2 = 36)
+    keyboard_.setKeyPressBaseOctave(4); // the computer keyboard's row starts at C4
+    keyboard_.setWantsKeyboardFocus(true);
+    addAndMakeVisible(keyboard_);
     setResizable(true, true);
-    setResizeLimits(780, 500, 1600, 1000);
+    setResizeLimits(780, 570, 1600, 1100);
     setSize(kDefaultWidth, kDefaultHeight);
     refreshReadouts();
     startTimerHz(30);
@@ -59,6 +68,9 @@ void RosinEditor::resized()
     controls_.setBounds(area.removeFromTop(kControlsHeight));
     area.removeFromTop(8);
     area.removeFromBottom(10);
+    keyboard_.setBounds(area.removeFromBottom(kKeyboardHeight));
+    keyboard_.setKeyWidth(static_cast<float>(area.getWidth()) / 38.5f); // 38 white keys from C2 to E7
+    area.removeFromBottom(8);
     auto lanes = area.removeFromLeft(area.getWidth() * 57 / 100);
     area.removeFromLeft(8);
     schelleng_.setBounds(area);

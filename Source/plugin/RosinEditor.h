@@ -2,10 +2,12 @@
 // Rosin's editor: the host parameters as controls (ParameterControls), one lane of live readouts per string
 // (StringLane) and a Schelleng diagram of the sounding string (SchellengDiagram). Live values come from the
 // processor's Telemetry, lock-free atomics the audio thread writes once per block; a ~30 Hz timer reads them.
+// An on-screen keyboard (mouse, or the computer keyboard once it has focus) plays without a MIDI controller.
 #include <array>
 #include <memory>
 
 #include <juce_audio_processors/juce_audio_processors.h>
+#include <juce_audio_utils/juce_audio_utils.h>
 
 #include "ParameterControls.h"
 #include "SchellengDiagram.h"
@@ -19,7 +21,7 @@ class RosinProcessor;
 class RosinEditor : public juce::AudioProcessorEditor, private juce::Timer
 {
   public:
-    static constexpr int kDefaultWidth = 900, kDefaultHeight = 588;
+    static constexpr int kDefaultWidth = 900, kDefaultHeight = 656;
     static constexpr int kLanes = 4;
 
     explicit RosinEditor(RosinProcessor& processor);
@@ -38,6 +40,7 @@ class RosinEditor : public juce::AudioProcessorEditor, private juce::Timer
     ParameterControls controls_;
     std::array<std::unique_ptr<StringLane>, kLanes> lanes_;
     SchellengDiagram schelleng_;
+    juce::MidiKeyboardComponent keyboard_;
     int soundingString_ = -1; // index from the lowest; the diagram follows the last bowed string
 };
 

@@ -44,6 +44,7 @@ RosinProcessor::RosinProcessor()
       programs_(loadFactoryPrograms())
 {
     setCurrentProgram(findProgram(programs_, kDefaultProgram));
+    keyboardState_.addListener(&keyboardQueue_);
     startTimerHz(20);
 }
 
@@ -54,6 +55,7 @@ RosinProcessor::~RosinProcessor()
     // here before the members it uses go away.
     closing_ = true;
     stopTimer();
+    keyboardState_.removeListener(&keyboardQueue_);
     while (timerCallbacksRunning_.load() > 0)
         std::this_thread::yield();
 }
@@ -100,6 +102,8 @@ void RosinProcessor::setCurrentProgram(int index)
     setParameterValue(ids::beta, static_cast<float>(preset.beta));
     setParameterValue(ids::outputLevel,
                       static_cast<float>(preset.outputLevel.value_or(kDefaultOutputLevelDb)));
+    if (!prepared_)
+        publishIdleTelemetry();
 }
 
 bool RosinProcessor::setProgramByName(const std::string& name)
@@ -253,6 +257,15 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
         detectors_[k].setNominalFrequency(engine->openFrequencies[k] / ratio);
     }
 
+    // The on-screen keyboard's notes, at the block's first sample.
+    keyboardQueue_.drain(
+        [this](const std::uint8_t* bytes, int size)
+        {
+            gesture::GestureEvent e;
+            if (gesture::decodeMidi(bytes, size, 0, e))
+                controller_.handleEvent(e);
+        });
+
     float* out = buffer.getWritePointer(0);
     auto event = midi.cbegin();
     const auto end = midi.cend();
@@ -300,6 +313,33 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
         runawayResets_.fetch_add(runaways, std::memory_order_relaxed);
     if (nonFinite > 0)
         nonFiniteSamples_.fetch_add(nonFinite, std::memory_order_relaxed);
+}
+
+void RosinProcessor::publishIdleTelemetry()
+{
+    physics::InstrumentConfig config;
+    {
+        std::lock_guard<std::mutex> lock(builderMutex_);
+        config = buildInstrumentConfig(reader_.readKey(), extras_);
+    }
+    const ParameterSnapshot snapshot = reader_.read(static_cast<int>(config.strings.size()));
+    auto law = physics::makeFrictionLaw(config.friction, config.contact);
+    law->prepare(sampleRate_);
+    const int strings = std::min(static_cast<int>(config.strings.size()), Telemetry::kMaxStrings);
+    telemetry_.stringCount.store(strings, std::memory_order_relaxed);
+    for (int s = 0; s < strings; ++s)
+    {
+        const auto k = static_cast<std::size_t>(s);
+        StringReadout r;
+        r.openFrequency = r.frequency = static_cast<float>(config.strings[k].fundamental());
+        r.impedance = static_cast<float>(config.strings[k].impedance());
+        r.bridgeConductance = static_cast<float>(schellengConductance(config, k));
+        r.bowForce = static_cast<float>(snapshot.gesture.bowForce);
+        r.beta = static_cast<float>(snapshot.gesture.beta);
+        r.bowVelocity = 0.0f;
+        r.muStatic = static_cast<float>(law->staticCoefficient(snapshot.gesture.bowForce));
+        telemetry_.strings[k].publish(r);
+    }
 }
 
 void RosinProcessor::publishTelemetry(const Engine& engine) noexcept
@@ -376,6 +416,8 @@ void RosinProcessor::setStateInformation(const void* data, int sizeInBytes)
     tree.removeProperty("program", nullptr);
     state_.replaceState(tree);
     refreshHostValues(state_);
+    if (!prepared_)
+        publishIdleTelemetry();
 }
 
 } // namespace rosin::plugin

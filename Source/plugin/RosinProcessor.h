@@ -19,6 +19,7 @@
 #include "EngineSlot.h"
 #include "FactoryPrograms.h"
 #include "InstrumentSetup.h"
+#include "KeyboardQueue.h"
 #include "PluginParameters.h"
 #include "StringTelemetry.h"
 #include "gesture/IntonationEar.h"
@@ -75,8 +76,11 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     int nonFiniteSamples() const noexcept { return nonFiniteSamples_.load(); }
     /// The engine the audio thread uses (tests, offline tools; not thread-safe against a swap).
     const Engine* activeEngine() const noexcept { return slot_.active(); }
-    /// Per-string readouts for the editor, published by processBlock once per block (lock-free).
+    /// Per-string readouts for the editor, published by processBlock once per block (lock-free); before audio
+    /// runs, the instrument's strings at rest.
     const Telemetry& telemetry() const noexcept { return telemetry_; }
+    /// The on-screen keyboard's state (message thread); its notes reach processBlock lock-free.
+    juce::MidiKeyboardState& keyboardState() noexcept { return keyboardState_; }
 
   private:
     void timerCallback() override;
@@ -116,6 +120,10 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     std::array<gesture::IntonationEar, gesture::MidiGestureController::kMaxStrings> ears_{};
     Telemetry telemetry_;
     void publishTelemetry(const Engine& engine) noexcept;
+    /// Before prepareToPlay: the lanes and diagram show the current instrument's strings at rest.
+    void publishIdleTelemetry();
+    juce::MidiKeyboardState keyboardState_;
+    KeyboardQueue keyboardQueue_;
     /// The gesture controller and the ears for the engine's strings (fixed-size state: no allocation).
     void prepareGesture(const Engine& engine);
 };
