@@ -48,6 +48,9 @@ struct Preset
     /// dB, the plugin's output level for this program (its default -12 dB when absent): a calibration, set so
     /// that the demo phrase peaks near -6 dBFS (README, "What the plugin sends").
     std::optional<double> outputLevel;
+    /// The plugin's measured body response for this program (absolute path of a WAV file; the file may give
+    /// it relative to its own folder): bridge force (N) to sound pressure (Pa). Absent: the modal body.
+    std::optional<std::string> bodyResponse;
     std::optional<RigPreset> rig; ///< set: the rig is bowed instead of the string and body
 };
 

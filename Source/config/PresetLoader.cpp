@@ -177,7 +177,7 @@ Preset parsePreset(const nlohmann::json& root, const std::string& file, const st
     requireFormat(root, file, "rosin-preset/1");
     const JsonObject r(root, file, "");
     r.allowOnly({"format", "name", "description", "string", "body", "friction", "contact", "torsion",
-                 "bendingStiffness", "ambientOffset", "beta", "outputLevel", "rig"});
+                 "bendingStiffness", "ambientOffset", "beta", "outputLevel", "bodyResponse", "rig"});
 
     Preset p = defaultPreset();
     p.source = file;
@@ -201,6 +201,14 @@ Preset parsePreset(const nlohmann::json& root, const std::string& file, const st
     p.ambientOffset = r.optionalNumber("ambientOffset", kAmbientOffset).value_or(p.ambientOffset);
     p.beta = r.optionalNumber("beta", gesture::limits::beta).value_or(p.beta);
     p.outputLevel = r.optionalNumber("outputLevel", kOutputLevel);
+    if (const auto response = r.optionalString("bodyResponse"))
+    {
+        const auto path = std::filesystem::path(file).parent_path() / *response;
+        if (!std::filesystem::is_regular_file(path))
+            r.fail("bodyResponse", "an existing audio file (relative to the preset's folder)",
+                   "\"" + *response + "\" (" + path.string() + " does not exist)");
+        p.bodyResponse = std::filesystem::absolute(path).lexically_normal().string();
+    }
     parseRig(r, p);
     return p;
 }

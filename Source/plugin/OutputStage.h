@@ -1,10 +1,11 @@
 #pragma once
-// What the plugin sends to the host, one sample at a time: the quantity the user chose (the sound the body
-// radiates by default; the bridge force or the bridge velocity for the lab), scaled to audio, DC-blocked
-// where the quantity has a DC (the bow's static pull on the bridge), guarded against non-finite values and
-// soft-clipped. Real-time safe after prepare().
+// What the plugin sends to the host: the quantity the user chose (the sound the body radiates by default,
+// from the modal body or from a measured body response; the bridge force or the bridge velocity for the lab),
+// scaled to audio, DC-blocked where the quantity has a DC (the bow's static pull on the bridge), guarded
+// against non-finite values, then per block gained and soft-clipped. Real-time safe after prepare().
 #include <juce_dsp/juce_dsp.h>
 
+#include "MeasuredRadiation.h"
 #include "gesture/OnePoleSmoother.h"
 #include "physics/instrument/BowedInstrument.h"
 
@@ -42,14 +43,21 @@ class OutputStage
 {
   public:
     /// Off the audio thread.
-    void prepare(double sampleRate, double gainSmoothingSeconds);
+    void prepare(double sampleRate, double gainSmoothingSeconds, int maximumBlockSize);
     void reset() noexcept;
-    /// The sample for this step of `instrument`, whose step returned `bridgeForce`. `nonFinite` is set when
-    /// the quantity was not finite (the sample is then 0).
-    float process(const physics::BowedInstrument& instrument, double bridgeForce,
-                  const OutputSettings& settings, bool& nonFinite) noexcept;
+    /// Sample i of the block, before gain: this step of `instrument`, whose step returned `bridgeForce`.
+    /// `nonFinite` is set when the quantity was not finite (the sample is then 0).
+    float sample(int i, const physics::BowedInstrument& instrument, double bridgeForce,
+                 const OutputSettings& settings, bool& nonFinite) noexcept;
+    /// After the block's samples: the measured response's sound where one is in use, gain, soft clip.
+    void finishBlock(float* out, int n, const OutputSettings& settings) noexcept;
+
+    /// The measured body response (audio thread; MeasuredRadiation.h).
+    MeasuredRadiation& measured() noexcept { return measured_; }
+    int latencySamples() const noexcept { return measured_.latencySamples(); }
 
   private:
+    MeasuredRadiation measured_;
     juce::dsp::IIR::Filter<double> dcBlocker_;
     gesture::OnePoleSmoother gain_;
 };

@@ -34,6 +34,15 @@ RosinEditor::RosinEditor(RosinProcessor& processor)
     keyboard_.setKeyPressBaseOctave(4); // the computer keyboard's row starts at C4
     keyboard_.setWantsKeyboardFocus(true);
     addAndMakeVisible(keyboard_);
+    addAndMakeVisible(loadResponse_);
+    addAndMakeVisible(clearResponse_);
+    addAndMakeVisible(responseStatus_);
+    loadResponse_.setTooltip(
+        "Load a measured body response: a WAV impulse response from bridge force (N) to sound "
+        "pressure (Pa), used for the radiated sound");
+    loadResponse_.onClick = [this] { chooseBodyResponse(); };
+    clearResponse_.onClick = [this] { processor_.bodyResponse().clear(); };
+    responseStatus_.setFont(juce::Font(12.0f));
     setResizable(true, true);
     setResizeLimits(780, 570, 1600, 1100);
     setSize(kDefaultWidth, kDefaultHeight);
@@ -66,6 +75,14 @@ void RosinEditor::resized()
     auto area = getLocalBounds().reduced(10, 0);
     area.removeFromTop(kHeaderHeight);
     controls_.setBounds(area.removeFromTop(kControlsHeight));
+    // Beside the output choice (the controls' second row): the body response's buttons and status.
+    auto responseRow = controls_.getBounds()
+                           .withTrimmedTop(ParameterControls::kSelectorRowHeight)
+                           .withHeight(ParameterControls::kSelectorRowHeight)
+                           .withTrimmedLeft(410);
+    loadResponse_.setBounds(responseRow.removeFromLeft(120).reduced(0, 3));
+    clearResponse_.setBounds(responseRow.removeFromLeft(90).reduced(4, 3));
+    responseStatus_.setBounds(responseRow);
     area.removeFromTop(8);
     area.removeFromBottom(10);
     keyboard_.setBounds(area.removeFromBottom(kKeyboardHeight));
@@ -79,8 +96,25 @@ void RosinEditor::resized()
         lane->setBounds(lanes.removeFromTop(laneHeight));
 }
 
+void RosinEditor::chooseBodyResponse()
+{
+    chooser_ = std::make_unique<juce::FileChooser>("Body response (bridge force to sound pressure)",
+                                                   juce::File(), "*.wav;*.aif;*.aiff;*.flac");
+    chooser_->launchAsync(juce::FileBrowserComponent::openMode | juce::FileBrowserComponent::canSelectFiles,
+                          [this](const juce::FileChooser& chooser)
+                          {
+                              if (chooser.getResult() != juce::File())
+                                  processor_.bodyResponse().load(chooser.getResult());
+                          });
+}
+
 void RosinEditor::refreshReadouts()
 {
+    if (responseStatus_.getText() != processor_.bodyResponse().status())
+    {
+        responseStatus_.setText(processor_.bodyResponse().status(), juce::dontSendNotification);
+        responseStatus_.setTooltip(processor_.bodyResponse().status());
+    }
     const Telemetry& telemetry = processor_.telemetry();
     const int count =
         juce::jlimit(0, Telemetry::kMaxStrings, telemetry.stringCount.load(std::memory_order_relaxed));

@@ -41,6 +41,11 @@ class RosinEditor : public juce::AudioProcessorEditor, private juce::Timer
     std::array<std::unique_ptr<StringLane>, kLanes> lanes_;
     SchellengDiagram schelleng_;
     juce::MidiKeyboardComponent keyboard_;
+    // The measured body response: load (a file chooser), back to the modal body, and what is in use.
+    juce::TextButton loadResponse_{"Body response..."}, clearResponse_{"Modal body"};
+    juce::Label responseStatus_;
+    std::unique_ptr<juce::FileChooser> chooser_;
+    void chooseBodyResponse();
     int soundingString_ = -1; // index from the lowest; the diagram follows the last bowed string
 };
 

@@ -102,6 +102,10 @@ void RosinProcessor::setCurrentProgram(int index)
     setParameterValue(ids::beta, static_cast<float>(preset.beta));
     setParameterValue(ids::outputLevel,
                       static_cast<float>(preset.outputLevel.value_or(kDefaultOutputLevelDb)));
+    if (preset.bodyResponse)
+        bodyResponse_.load(juce::File(*preset.bodyResponse));
+    else if (bodyResponse_.path().isNotEmpty())
+        bodyResponse_.clear();
     if (!prepared_)
         publishIdleTelemetry();
 }
@@ -146,7 +150,7 @@ std::unique_ptr<Engine> RosinProcessor::buildEngine(const InstrumentKey& key, in
     return engine;
 }
 
-void RosinProcessor::prepareToPlay(double sampleRate, int)
+void RosinProcessor::prepareToPlay(double sampleRate, int maximumExpectedSamplesPerBlock)
 {
     std::lock_guard<std::mutex> lock(builderMutex_);
     sampleRate_ = sampleRate;
@@ -159,7 +163,9 @@ void RosinProcessor::prepareToPlay(double sampleRate, int)
     const Engine& engine = *slot_.active();
     prepareGesture(engine);
     controllerSerial_ = engine.serial;
-    output_.prepare(sampleRate, kGainSmoothingSeconds);
+    collectBodyResponse(); // a response set before is built in prepare, ready for the first block
+    output_.prepare(sampleRate, kGainSmoothingSeconds, maximumExpectedSamplesPerBlock);
+    setLatencySamples(output_.latencySamples());
     for (auto& d : detectors_)
         d.prepare(sampleRate);
     resetRequested_ = false;
@@ -257,6 +263,7 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
         detectors_[k].setNominalFrequency(engine->openFrequencies[k] / ratio);
     }
 
+    collectBodyResponse();
     // The on-screen keyboard's notes, at the block's first sample.
     keyboardQueue_.drain(
         [this](const std::uint8_t* bytes, int size)
@@ -296,9 +303,10 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
             ears_[k].listen(outputs_[k].sticking, outputs_[k].bowPointVelocity, outputs_[k].bowVelocity);
         }
         bool bad = false;
-        out[i] = output_.process(instrument, y, snapshot.output, bad);
+        out[i] = output_.sample(i, instrument, y, snapshot.output, bad);
         nonFinite += bad ? 1 : 0;
     }
+    output_.finishBlock(out, numSamples, snapshot.output);
     for (; event != end; ++event) // events stamped past the block's end (malformed host data)
     {
         const auto m = *event;
@@ -313,6 +321,13 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
         runawayResets_.fetch_add(runaways, std::memory_order_relaxed);
     if (nonFinite > 0)
         nonFiniteSamples_.fetch_add(nonFinite, std::memory_order_relaxed);
+}
+
+void RosinProcessor::collectBodyResponse() noexcept
+{
+    responseHandoff_.collect([this](juce::AudioBuffer<float>&& response, double rate)
+                             { output_.measured().use(std::move(response), rate); },
+                             [this] { output_.measured().clear(); });
 }
 
 void RosinProcessor::publishIdleTelemetry()
@@ -385,6 +400,7 @@ void RosinProcessor::getStateInformation(juce::MemoryBlock& destData)
     juce::ValueTree tree = state_.copyState();
     tree.setProperty("stateVersion", kStateVersion, nullptr);
     tree.setProperty("program", getProgramName(currentProgram_), nullptr);
+    bodyResponse_.save(tree);
     if (auto xml = tree.createXml())
         copyXmlToBinary(*xml, destData);
 }
@@ -414,6 +430,7 @@ void RosinProcessor::setStateInformation(const void* data, int sizeInBytes)
     }
     tree.removeProperty("stateVersion", nullptr);
     tree.removeProperty("program", nullptr);
+    bodyResponse_.restore(tree);
     state_.replaceState(tree);
     refreshHostValues(state_);
     if (!prepared_)

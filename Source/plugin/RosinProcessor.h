@@ -16,6 +16,7 @@
 
 #include <juce_audio_processors/juce_audio_processors.h>
 
+#include "BodyResponse.h"
 #include "EngineSlot.h"
 #include "FactoryPrograms.h"
 #include "InstrumentSetup.h"
@@ -79,6 +80,8 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     /// Per-string readouts for the editor, published by processBlock once per block (lock-free); before audio
     /// runs, the instrument's strings at rest.
     const Telemetry& telemetry() const noexcept { return telemetry_; }
+    /// The measured body response (message thread): load, clear, status; saved with the state.
+    BodyResponseSetting& bodyResponse() noexcept { return bodyResponse_; }
     /// The on-screen keyboard's state (message thread); its notes reach processBlock lock-free.
     juce::MidiKeyboardState& keyboardState() noexcept { return keyboardState_; }
 
@@ -124,6 +127,10 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     void publishIdleTelemetry();
     juce::MidiKeyboardState keyboardState_;
     KeyboardQueue keyboardQueue_;
+    BodyResponseHandoff responseHandoff_;
+    BodyResponseSetting bodyResponse_{responseHandoff_};
+    /// Audio thread (or prepareToPlay): a response loaded or cleared since goes to the output stage.
+    void collectBodyResponse() noexcept;
     /// The gesture controller and the ears for the engine's strings (fixed-size state: no allocation).
     void prepareGesture(const Engine& engine);
 };

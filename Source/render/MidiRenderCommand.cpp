@@ -23,7 +23,8 @@ struct MidiOptions
     std::string midi, out = "rosin-midi.wav";
     std::string preset = "cello-plastic";
     std::string automation;
-    int output = 0; ///< index of plugin::outputChoiceNames()
+    int output = 0;           ///< index of plugin::outputChoiceNames()
+    std::string bodyResponse; ///< a measured body response (WAV), empty: the modal body
     bool dcBlocker = true;
     double sampleRate = 48000.0;
     int blockSize = 512;
@@ -44,10 +45,11 @@ int outputIndex(const std::string& v)
 MidiOptions parseMidiOptions(const std::vector<std::string>& args)
 {
     MidiOptions o;
-    const auto options = parseOptions(args,
-                                      {"--midi", "--out", "--preset", "--automation", "--output",
-                                       "--dc-blocker", "--sample-rate", "--block-size", "--tail"},
-                                      {});
+    const auto options =
+        parseOptions(args,
+                     {"--midi", "--out", "--preset", "--automation", "--output", "--dc-blocker",
+                      "--body-response", "--sample-rate", "--block-size", "--tail"},
+                     {});
     for (const Option& opt : options)
     {
         const std::string& v = opt.value.value_or("");
@@ -61,6 +63,8 @@ MidiOptions parseMidiOptions(const std::vector<std::string>& args)
             o.automation = v;
         else if (opt.name == "--output")
             o.output = outputIndex(v);
+        else if (opt.name == "--body-response")
+            o.bodyResponse = v;
         else if (opt.name == "--dc-blocker")
         {
             if (v != "on" && v != "off")
@@ -120,7 +124,8 @@ bool isMidiRender(const std::vector<std::string>& args)
 std::string midiRenderHelp()
 {
     return "usage: rosin render --midi FILE.mid [--preset NAME] [--automation FILE.json] [--out FILE.wav]\n"
-           "                    [--output radiated|force|velocity] [--dc-blocker on|off]\n"
+           "                    [--output radiated|force|velocity] [--dc-blocker on|off] [--body-response "
+           "FILE]\n"
            "                    [--sample-rate HZ] [--block-size N] [--tail SECONDS]\n"
            "\n"
            "Plays a MIDI file through the plugin's own AudioProcessor (the cello or violin of the preset, "
@@ -136,6 +141,9 @@ std::string midiRenderHelp()
            "                           listener at 1 m, default), force or velocity (at the bridge)\n"
            "  --dc-blocker on|off      the plugin's DC blocker on the force and velocity outputs (default "
            "on)\n"
+           "  --body-response FILE     a measured body response (WAV, AIFF or FLAC): bridge force (N) to "
+           "sound\n"
+           "                           pressure (Pa), heard instead of the modal body's radiation\n"
            "  --sample-rate HZ         integer 8000..384000 (default 48000)\n"
            "  --block-size N           host block size 1..65536 (default 512); the output does not depend on "
            "it\n"
@@ -164,6 +172,12 @@ int runMidiRender(const std::vector<std::string>& args, std::ostream& out, std::
         throw config::ConfigError("--preset", "", "a factory program (one of " + names + ")",
                                   "\"" + o.preset + "\"");
     }
+    if (!o.bodyResponse.empty() &&
+        !processor.bodyResponse().load(juce::File::getCurrentWorkingDirectory().getChildFile(o.bodyResponse)))
+        throw config::ConfigError("--body-response", "",
+                                  "a readable impulse response (" +
+                                      processor.bodyResponse().status().toStdString() + ")",
+                                  "\"" + o.bodyResponse + "\"");
     setPlainValue(processor, plugin::ids::output, static_cast<float>(o.output));
     setPlainValue(processor, plugin::ids::dcBlocker, o.dcBlocker ? 1.0f : 0.0f);
     plugin::MidiRenderSettings settings;

@@ -66,14 +66,7 @@ void checkRange(const PitchCase& c)
         setParameter(p, plugin::ids::bowSpeed, 0.1f);
         setParameter(p, plugin::ids::beta, 0.1f);
         setParameter(p, plugin::ids::outputLevel, 0.0f);
-        juce::MidiMessageSequence seq;
-        seq.addEvent(juce::MidiMessage::noteOn(1, note, static_cast<juce::uint8>(80)), 0.0);
-        seq.addEvent(juce::MidiMessage::noteOff(1, note), 1.6);
-        plugin::MidiRenderSettings settings;
-        settings.sampleRate = kFs;
-        settings.tailSeconds = 0.0;
-        const auto r = plugin::renderMidi(p, seq, settings);
-        const double cents = measuredPitchCents(r.audio, note);
+        const double cents = measuredPitchCents(renderHeldNote(p, note, 1.6, 0.0), note);
         const bool open = std::find(c.openNotes.begin(), c.openNotes.end(), note) != c.openNotes.end();
         if (open && std::abs(cents) > std::abs(worstOpen))
             worstOpen = cents;

@@ -41,6 +41,20 @@ inline plugin::MidiRenderResult renderDemo(const std::string& program, double sa
     return plugin::renderMidi(processor, demoPhrase(), settings);
 }
 
+/// One note at velocity 80 held for `seconds` from the start, then `tailSeconds` more, through `processor` as
+/// it is set up (program, parameters); 48 kHz.
+inline std::vector<float> renderHeldNote(plugin::RosinProcessor& processor, int note, double seconds,
+                                         double tailSeconds)
+{
+    juce::MidiMessageSequence seq;
+    seq.addEvent(juce::MidiMessage::noteOn(1, note, static_cast<juce::uint8>(80)), 0.0);
+    seq.addEvent(juce::MidiMessage::noteOff(1, note), seconds);
+    plugin::MidiRenderSettings settings;
+    settings.sampleRate = 48000.0;
+    settings.tailSeconds = tailSeconds;
+    return plugin::renderMidi(processor, seq, settings).audio;
+}
+
 inline void setParameter(plugin::RosinProcessor& p, const char* id, float plainValue)
 {
     auto* parameter = p.parameters().getParameter(id);

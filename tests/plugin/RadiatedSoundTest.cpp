@@ -23,13 +23,7 @@ std::vector<float> sustainedNote(int note, plugin::OutputChoice output, bool dcB
     plugin::RosinProcessor p;
     setParameter(p, plugin::ids::output, static_cast<float>(output));
     setParameter(p, plugin::ids::dcBlocker, dcBlocker ? 1.0f : 0.0f);
-    juce::MidiMessageSequence seq;
-    seq.addEvent(juce::MidiMessage::noteOn(1, note, static_cast<juce::uint8>(80)), 0.0);
-    seq.addEvent(juce::MidiMessage::noteOff(1, note), 2.0);
-    plugin::MidiRenderSettings settings;
-    settings.sampleRate = kFs;
-    settings.tailSeconds = 0.0;
-    return plugin::renderMidi(p, seq, settings).audio;
+    return renderHeldNote(p, note, 2.0, 0.0);
 }
 
 struct NoteFigures
