@@ -9,8 +9,9 @@
 namespace rosin::physics
 {
 
-void BridgeBody::configure(const BodyParameters& body, double sampleRate, double modeLimit)
+void BridgeBody::configure(const BodyParameters& body, double sampleRate, double modeLimit, bool radiates)
 {
+    radiates_ = radiates;
     std::vector<ModeSpec> specs;
     std::vector<double> radiation; // c_k, Pa per m/s^2
     gain_.clear();
@@ -65,12 +66,16 @@ void BridgeBody::advance(double bridgeForce) noexcept
     lastForce_ = bridgeForce;
     if (bank_.size() == 0)
         return;
-    compactPressure_ = ph_ + P0_ * bridgeForce;
-    pressureNow_ += lowpassCoefficient_ * (compactPressure_ - pressureNow_);
+    if (radiates_)
+    {
+        compactPressure_ = ph_ + P0_ * bridgeForce;
+        pressureNow_ += lowpassCoefficient_ * (compactPressure_ - pressureNow_);
+    }
     velocityNow_ = udh_ + U1_ * bridgeForce;
     const ThreeSums s = advanceOneInputThreeOutputs(bank_, gainIn_.data(), bridgeForce, u_, ud_, udd_);
     uh_ = s.first, udh_ = s.second, uddh_ = s.third;
-    ph_ = sumOutput(bank_, p_);
+    if (radiates_)
+        ph_ = sumOutput(bank_, p_);
 }
 
 int BridgeBody::modeCount() const noexcept

@@ -15,8 +15,9 @@ class BridgeBody
 {
   public:
     /// Off the audio thread. Modes at or above modeLimit (rad/s) are left out; the bank is padded with silent
-    /// modes to whole vectors.
-    void configure(const BodyParameters& body, double sampleRate, double modeLimit);
+    /// modes to whole vectors. `radiates` false skips the pressure sum (a string's own body in the lab, whose
+    /// sound nobody hears: radiatedPressure() then stays 0).
+    void configure(const BodyParameters& body, double sampleRate, double modeLimit, bool radiates = true);
     void reset() noexcept;
     /// Feed this sample's total bridge force (N) and advance: the histories become those of the next sample.
     void advance(double bridgeForce) noexcept;
@@ -59,7 +60,8 @@ class BridgeBody
     double U0_ = 0, U1_ = 0, U2_ = 0, P0_ = 0;
     double pressureNow_ = 0, velocityNow_ = 0;
     double lowpassCoefficient_ = 1.0; ///< the one-pole H of BodyRadiation.h, impulse invariant
-    double compactPressure_ = 0;      ///< the modes' sum before H
+    bool radiates_ = true;
+    double compactPressure_ = 0; ///< the modes' sum before H
     double lastForce_ = 0;
 };
 

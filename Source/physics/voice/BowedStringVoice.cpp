@@ -113,7 +113,7 @@ void BowedStringVoice::Impl::buildModes(const VoiceConfig& cfg, double fs)
     trans.configure(transSpecs, fs);
     tors.configure(torsSpecs, fs);
 
-    ownBody.configure(cfg.body, fs, modeLimit);
+    ownBody.configure(cfg.body, fs, modeLimit, false); // the lab's voice: its sound is heard elsewhere
     aN.assign(nTrans, 0.0);
     transPhi.assign(nTrans, 0.0);
     bN.assign(nTrans, 0.0);
