@@ -77,7 +77,8 @@ TEST(BodyRadiation, DiscretePressureMatchesTheModalRadiativity)
 }
 
 // A force held on the bridge (the bow's static pull) bends the body and stays: the radiated pressure, the
-// time derivative of a volume velocity, returns to zero, and the bridge velocity with it.
+// time derivative of a volume velocity, returns to zero, and the bridge velocity with it (to the round-off of
+// the kernels' single precision, on every kernel path).
 TEST(BodyRadiation, AHeldForceIsNotHeard)
 {
     BridgeBody b = configured(celloBody());
@@ -95,7 +96,9 @@ TEST(BodyRadiation, AHeldForceIsNotHeard)
         }
     }
     EXPECT_GT(peak, 0.05); // Pa per N: the step is heard as the modes ring
-    EXPECT_LT(late, 1e-6 * peak);
+    // -80 dB: the floor is the modal state's single-precision round-off under a constant input (measured
+    // 1.3e-5 of the peak on the default kernel path, less on the AVX paths), not a DC.
+    EXPECT_LT(late, 1e-4 * peak);
     EXPECT_LT(lateVelocity, 1e-4 * peakVelocity); // the modal state's single-precision round-off
 }
 
