@@ -113,8 +113,7 @@ bool BodyResponseSetting::load(const juce::File& file)
     }
     catch (const BodyResponseError& e)
     {
-        status_ = e.what();
-        std::cerr << "rosin: " << e.what() << "\n";
+        status_ = e.what(); // the caller decides where to say it (editor, stderr, a CLI error)
         return false;
     }
 }
@@ -157,7 +156,12 @@ void BodyResponseSetting::restore(juce::ValueTree& state)
         std::cerr << "rosin: " << status_ << "\n";
         return;
     }
-    if (load(file) && saved.isNotEmpty() && saved != sha256_)
+    if (!load(file))
+    {
+        std::cerr << "rosin: " << status_ << "\n";
+        return;
+    }
+    if (saved.isNotEmpty() && saved != sha256_)
     {
         status_ += "; the file changed since the project was saved";
         std::cerr << "rosin: body response " << path << " changed since the project was saved\n";

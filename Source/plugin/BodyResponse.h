@@ -89,8 +89,8 @@ class BodyResponseSetting
 {
   public:
     explicit BodyResponseSetting(BodyResponseHandoff& handoff) : handoff_(handoff) {}
-    /// Reads and hands over `file`. False (and the reason in status()) if it cannot be used; the response
-    /// in use stays.
+    /// Reads and hands over `file`. False (and the reason, naming the file, in status()) if it cannot be used;
+    /// the response in use stays.
     bool load(const juce::File& file);
     /// Back to the modal body's sound.
     void clear();

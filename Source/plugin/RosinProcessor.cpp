@@ -102,8 +102,8 @@ void RosinProcessor::setCurrentProgram(int index)
     setParameterValue(ids::beta, static_cast<float>(preset.beta));
     setParameterValue(ids::outputLevel,
                       static_cast<float>(preset.outputLevel.value_or(kDefaultOutputLevelDb)));
-    if (preset.bodyResponse)
-        bodyResponse_.load(juce::File(*preset.bodyResponse));
+    if (preset.bodyResponse && !bodyResponse_.load(juce::File(*preset.bodyResponse)))
+        std::cerr << "rosin: program " << preset.name << ": " << bodyResponse_.status() << "\n";
     else if (bodyResponse_.path().isNotEmpty())
         bodyResponse_.clear();
     if (!prepared_)

@@ -2,6 +2,8 @@
 // expectation.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include <cstdlib>
 
 #include "TempFiles.h"
@@ -147,6 +149,24 @@ TEST(PresetLoader, InlineStringObjects)
     EXPECT_EQ(b.ambientOffset, -5.0);
 }
 
+// The plugin's level and measured body response of a program: the level as given, the response's path
+// resolved against the preset's own folder (so a preset and its response travel together).
+TEST(PresetLoader, OutputLevelAndBodyResponseRelativeToThePreset)
+{
+    test::TempDir dir;
+    dir.write("ir.wav", "RIFF"); // existence is what the loader checks; the plugin reads the audio
+    const auto path =
+        dir.write("p.json", R"({"format":"rosin-preset/1","outputLevel":-3.5,"bodyResponse":"ir.wav"})");
+    const Preset p = loadPreset(path);
+    ASSERT_TRUE(p.outputLevel.has_value());
+    EXPECT_EQ(*p.outputLevel, -3.5);
+    ASSERT_TRUE(p.bodyResponse.has_value());
+    EXPECT_EQ(
+        std::filesystem::path(*p.bodyResponse),
+        std::filesystem::absolute(std::filesystem::path(path).parent_path() / "ir.wav").lexically_normal());
+    EXPECT_FALSE(loadPreset("cello-plastic").bodyResponse.has_value()); // Rosin ships no measured data
+}
+
 struct BadPreset
 {
     const char* name;
@@ -192,6 +212,9 @@ INSTANTIATE_TEST_SUITE_P(
                   "one of classical, reconstructed, plastic, viscous, modified-bow, modified-rod"},
         BadPreset{"frictionNumber", P(R"("friction":3)"), "friction", "one of classical"},
         BadPreset{"body", P(R"("body":"viola")"), "body", "one of cello, violin, rigid"},
+        BadPreset{"outputLevel", P(R"("outputLevel":20)"), "outputLevel", "-60..12"},
+        BadPreset{"bodyResponseMissing", P(R"("bodyResponse":"no-such.wav")"), "bodyResponse",
+                  "an existing audio file"},
         BadPreset{"stringName", P(R"("string":"cello-X9")"), "string", "cello-D3"},
         BadPreset{"stringArray", P(R"("string":[1])"), "string", "a catalogue name or a string object"},
         BadPreset{"stringBase", P(R"("string":{"base":"nope"})"), "string.base", "violin-E5"},
