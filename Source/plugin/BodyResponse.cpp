@@ -12,6 +12,9 @@ namespace rosin::plugin
 
 namespace
 {
+const juce::Identifier kPathProperty{"bodyResponse"};
+const juce::Identifier kHashProperty{"bodyResponseSha256"};
+
 [[noreturn]] void fail(const juce::File& file, const juce::String& what)
 {
     throw BodyResponseError(("body response " + file.getFullPathName() + ": " + what).toStdString());
@@ -87,17 +90,6 @@ void BodyResponseHandoff::requestClear()
     state_.compare_exchange_strong(ready, kEmpty, std::memory_order_acq_rel); // drop one not yet taken
     clear_.store(true, std::memory_order_release);
 }
-
-} // namespace rosin::plugin
-
-namespace rosin::plugin
-{
-
-namespace
-{
-const juce::Identifier kPathProperty{"bodyResponse"};
-const juce::Identifier kHashProperty{"bodyResponseSha256"};
-} // namespace
 
 bool BodyResponseSetting::load(const juce::File& file)
 {

@@ -78,19 +78,14 @@ class BodyResponseHandoff
     std::atomic<bool> clear_{false};
 };
 
-} // namespace rosin::plugin
-
-namespace rosin::plugin
-{
-
 /// The processor's measured body response on the message thread: which file, its content hash, and what
 /// happened last (for the editor). Loads go to the audio thread through the handoff.
 class BodyResponseSetting
 {
   public:
     explicit BodyResponseSetting(BodyResponseHandoff& handoff) : handoff_(handoff) {}
-    /// Reads and hands over `file`. False (and the reason, naming the file, in status()) if it cannot be used;
-    /// the response in use stays.
+    /// Reads and hands over `file`. False (and the reason, naming the file, in status()) if it cannot be
+    /// used; the response in use stays.
     bool load(const juce::File& file);
     /// Back to the modal body's sound.
     void clear();

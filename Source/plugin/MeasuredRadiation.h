@@ -24,10 +24,6 @@ class MeasuredRadiation
     void use(juce::AudioBuffer<float>&& response, double sampleRate) noexcept;
     /// Audio thread: back to the modal sound.
     void clear() noexcept;
-    /// True from use() until clear() has faded out.
-    bool active() const noexcept { return state_ != State::Off; }
-    /// True once the measured sound alone is heard.
-    bool audible() const noexcept { return state_ == State::On; }
     int latencySamples() const noexcept { return convolution_.getLatency(); }
 
     /// The bridge force of sample i of the block (i < capacity()).

@@ -12,14 +12,6 @@ juce::StringArray outputChoiceNames()
     return {"radiated sound", "bridge force", "bridge velocity"};
 }
 
-std::optional<OutputChoice> outputChoiceFromName(const juce::String& name)
-{
-    const int index = outputChoiceNames().indexOf(name);
-    if (index < 0)
-        return std::nullopt;
-    return static_cast<OutputChoice>(index);
-}
-
 void OutputStage::prepare(double sampleRate, double gainSmoothingSeconds, int maximumBlockSize)
 {
     measured_.prepare(sampleRate, maximumBlockSize);

@@ -21,8 +21,6 @@ enum class OutputChoice
 
 /// Host-visible names, in choice order: "radiated sound", "bridge force", "bridge velocity".
 juce::StringArray outputChoiceNames();
-/// By name (as above); std::nullopt for anything else.
-std::optional<OutputChoice> outputChoiceFromName(const juce::String& name);
 
 /// Audio sample per unit of each quantity at 0 dB output level. Calibrations, not physics: fixed so that the
 /// demo phrase at the default output level (-12 dB) peaks near -6 dBFS with each output.

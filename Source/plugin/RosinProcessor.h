@@ -70,6 +70,8 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     /// Builder-side work: frees retired engines and builds one if the instrument parameters changed. Called
     /// by the message-thread timer; an offline renderer calls it between blocks. Never on the audio thread.
     void serviceEngineBuilds();
+    /// Sets a parameter by its plain value (its own unit), notifying the host, as a user's move would.
+    void setParameterValue(const char* id, float value);
     /// Selects a program by preset name; false if there is none of that name.
     bool setProgramByName(const std::string& name);
     /// Voice resets after a runaway, and non-finite output samples, since prepareToPlay.
@@ -88,7 +90,6 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
   private:
     void timerCallback() override;
     std::unique_ptr<Engine> buildEngine(const InstrumentKey& key, int generation);
-    void setParameterValue(const char* id, float value);
 
     juce::AudioProcessorValueTreeState state_;
     ParameterReader reader_;

@@ -8,6 +8,7 @@
 #include <juce_events/juce_events.h>
 
 #include "CommandLine.h"
+#include "ListeningOutput.h"
 #include "MidiRenderer.h"
 #include "WavWriter.h"
 #include "config/ConfigError.h"
@@ -23,7 +24,7 @@ struct MidiOptions
     std::string midi, out = "rosin-midi.wav";
     std::string preset = "cello-plastic";
     std::string automation;
-    int output = 0;           ///< index of plugin::outputChoiceNames()
+    plugin::OutputChoice output = plugin::OutputChoice::RadiatedSound;
     std::string bodyResponse; ///< a measured body response (WAV), empty: the modal body
     bool dcBlocker = true;
     double sampleRate = 48000.0;
@@ -31,15 +32,19 @@ struct MidiOptions
     double tail = 2.0;
 };
 
-/// --output takes the first word of the plugin's choice names: radiated, force, velocity.
-int outputIndex(const std::string& v)
+/// --output takes the words of `rosin render --gesture` (ListeningOutput.h) and sets the plugin's choice.
+plugin::OutputChoice outputChoice(const std::string& v)
 {
-    const juce::StringArray names = plugin::outputChoiceNames();
-    for (int i = 0; i < names.size(); ++i)
-        if (names[i].upToFirstOccurrenceOf(" ", false, false) == juce::String(v) ||
-            names[i].fromFirstOccurrenceOf(" ", false, false) == juce::String(v))
-            return i;
-    throw config::ConfigError("--output", "", "radiated, force or velocity", "\"" + v + "\"");
+    switch (outputQuantityFromName(v))
+    {
+    case OutputQuantity::Force:
+        return plugin::OutputChoice::BridgeForce;
+    case OutputQuantity::Velocity:
+        return plugin::OutputChoice::BridgeVelocity;
+    case OutputQuantity::Radiated:
+        break;
+    }
+    return plugin::OutputChoice::RadiatedSound;
 }
 
 MidiOptions parseMidiOptions(const std::vector<std::string>& args)
@@ -62,7 +67,7 @@ MidiOptions parseMidiOptions(const std::vector<std::string>& args)
         else if (opt.name == "--automation")
             o.automation = v;
         else if (opt.name == "--output")
-            o.output = outputIndex(v);
+            o.output = outputChoice(v);
         else if (opt.name == "--body-response")
             o.bodyResponse = v;
         else if (opt.name == "--dc-blocker")
@@ -97,12 +102,6 @@ MidiOptions parseMidiOptions(const std::vector<std::string>& args)
     if (o.out.empty())
         throw config::ConfigError("--out", "", "a file name", "an empty string");
     return o;
-}
-
-void setPlainValue(plugin::RosinProcessor& processor, const char* id, float value)
-{
-    if (auto* p = processor.parameters().getParameter(id))
-        p->setValueNotifyingHost(p->convertTo0to1(value));
 }
 
 std::string fixed(double value, int digits)
@@ -178,8 +177,8 @@ int runMidiRender(const std::vector<std::string>& args, std::ostream& out, std::
                                   "a readable impulse response (" +
                                       processor.bodyResponse().status().toStdString() + ")",
                                   "\"" + o.bodyResponse + "\"");
-    setPlainValue(processor, plugin::ids::output, static_cast<float>(o.output));
-    setPlainValue(processor, plugin::ids::dcBlocker, o.dcBlocker ? 1.0f : 0.0f);
+    processor.setParameterValue(plugin::ids::output, static_cast<float>(o.output));
+    processor.setParameterValue(plugin::ids::dcBlocker, o.dcBlocker ? 1.0f : 0.0f);
     plugin::MidiRenderSettings settings;
     settings.sampleRate = o.sampleRate;
     settings.blockSize = o.blockSize;
@@ -191,8 +190,9 @@ int runMidiRender(const std::vector<std::string>& args, std::ostream& out, std::
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
 
     WavWriter wav(o.out, o.sampleRate, 1,
-                  "rosin plugin output (" + plugin::outputChoiceNames()[o.output].toStdString() +
-                      "), program " + o.preset);
+                  "rosin plugin output (" +
+                      plugin::outputChoiceNames()[static_cast<int>(o.output)].toStdString() + "), program " +
+                      o.preset);
     const float* channel = result.audio.data();
     wav.write(&channel, static_cast<int>(result.audio.size()));
     wav.close();
