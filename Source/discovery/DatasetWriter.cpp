@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 
 #include "DatasetReader.h"
 #include "StringFields.h"
+#include "config/AtomicFile.h"
 
 namespace rosin::discovery
 {
@@ -98,11 +98,7 @@ void writeDatasetDescription(const Dataset& dataset, const std::string& folder)
     fs::create_directories(folder, ec);
     if (ec)
         throw DatasetError(folder, "", "a folder that can be created", ec.message());
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.close();
-    if (!out)
-        throw DatasetError(file, "", "a writable file", "a write error");
+    config::writeFileAtomically(file, text);
 }
 
 } // namespace rosin::discovery

@@ -1,8 +1,6 @@
 #include "HysteresisLoop.h"
 
 #include <cstdio>
-#include <fstream>
-#include <stdexcept>
 
 namespace rosin::lab
 {
@@ -38,21 +36,17 @@ double HysteresisLoop::signedArea() const noexcept
     return 0.5 * twice;
 }
 
-void HysteresisLoop::writeCsv(const std::filesystem::path& file) const
+std::string HysteresisLoop::csv() const
 {
-    std::ofstream out(file);
-    if (!out)
-        throw std::runtime_error("cannot write the loop file " + file.string());
-    out << "time,slidingSpeed,frictionForce,contactTemperature\n";
+    std::string text = "time,slidingSpeed,frictionForce,contactTemperature\n";
     char line[160];
     for (const auto& p : points_)
     {
         std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g,%.9g\n", p.time, p.slidingSpeed, p.frictionForce,
                       p.contactTemperature);
-        out << line;
+        text += line;
     }
-    if (!out)
-        throw std::runtime_error("could not finish writing the loop file " + file.string());
+    return text;
 }
 
 } // namespace rosin::lab

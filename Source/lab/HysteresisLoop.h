@@ -3,7 +3,7 @@
 // at the bowed point against the sliding speed v - v_b, over a chosen interval of a simulation, kept with the
 // contact temperature so the figure can colour the loop by it. Written as CSV (time,slidingSpeed,
 // frictionForce,contactTemperature), the input of `plot_scan.py loop` (Resources/docs/scan-format.md).
-#include <filesystem>
+#include <string>
 #include <vector>
 
 #include "physics/voice/BowedStringVoice.h"
@@ -34,8 +34,9 @@ class HysteresisLoop
     /// > 0 when the loop runs anticlockwise in these axes, < 0 clockwise. N m/s. The seeds plot |mu| against
     /// |dv|; with the bow faster than the string (dv < 0, f > 0) that view mirrors dv, which flips the sense.
     double signedArea() const noexcept;
-    /// Writes the CSV; throws std::runtime_error naming the file if it cannot.
-    void writeCsv(const std::filesystem::path& file) const;
+    /// The loop as CSV text: the header "time,slidingSpeed,frictionForce,contactTemperature", a row per
+    /// sample.
+    std::string csv() const;
 
   private:
     double from_, to_, sampleRate_;

@@ -10,11 +10,13 @@
 #include <thread>
 
 #include "CommandLine.h"
+#include "config/AtomicFile.h"
 #include "config/ConfigError.h"
 #include "discovery/DatasetReader.h"
 #include "discovery/discover/Discovery.h"
 #include "discovery/discover/DiscoveryReport.h"
 #include "lab/scan/ChildProcess.h"
+#include "lab/scan/HelperScripts.h"
 #include "render/dataset/TrialSignals.h"
 
 #ifndef ROSIN_DISCOVER_FIGURE_SCRIPT
@@ -29,20 +31,11 @@ using config::ConfigError;
 
 namespace
 {
-void writeText(const fs::path& path, const std::string& text)
-{
-    std::ofstream f(path, std::ios::binary);
-    f << text;
-    if (!f)
-        throw ConfigError(path.string(), "", "a writable file", "a write failure");
-}
-
 // Runs the figure script if there is one; returns the PNGs it made.
 std::vector<std::string> makeFigures(const fs::path& reportDir, std::ostream& err)
 {
-    std::string script = ROSIN_DISCOVER_FIGURE_SCRIPT;
-    if (const char* env = std::getenv("ROSIN_DISCOVER_FIGURE_SCRIPT"))
-        script = env;
+    const std::string script = scan::findHelperScript("plot_discovery.py", "ROSIN_DISCOVER_FIGURE_SCRIPT",
+                                                      ROSIN_DISCOVER_FIGURE_SCRIPT);
     if (script.empty() || !fs::exists(script))
     {
         err << "warning: the report has no figures: the figure script "
@@ -175,10 +168,12 @@ int runDiscover(const std::vector<std::string>& args, std::ostream& out, std::os
     const discovery::Discovery d = discovery::runDiscovery(dataset, std::move(measured), seconds, settings);
 
     fs::create_directories(*report);
-    writeText(fs::path(*report) / "maps.json", discovery::discoveryMaps(d, dataset).dump(1) + "\n");
+    config::writeFileAtomically(fs::path(*report) / "maps.json",
+                                discovery::discoveryMaps(d, dataset).dump(1) + "\n");
     const auto figures = makeFigures(*report, err);
-    writeText(fs::path(*report) / "report.md", discovery::discoveryMarkdown(d, dataset, figures));
-    writeText(*json, discovery::discoveryJson(d, dataset).dump(2) + "\n");
+    config::writeFileAtomically(fs::path(*report) / "report.md",
+                                discovery::discoveryMarkdown(d, dataset, figures));
+    config::writeFileAtomically(*json, discovery::discoveryJson(d, dataset).dump(2) + "\n");
 
     char line[200];
     std::snprintf(line, sizeof(line), "%s: gap %.3g -> %.3g", d.status.c_str(), d.gapBefore.overall,

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "CommandLine.h"
+#include "config/AtomicFile.h"
 #include "config/ConfigError.h"
 #include "lab/scan/Figures.h"
 
@@ -39,7 +40,7 @@ void writeLoop(const lab::HysteresisLoop& loop, const LoopRequest& request, cons
                std::ostream& out, std::ostream& err)
 {
     const std::string csv = std::filesystem::path(request.figure).replace_extension(".csv").string();
-    loop.writeCsv(csv);
+    config::writeFileAtomically(csv, loop.csv());
     out << "wrote " << csv << ": " << loop.points().size() << " samples of the friction/velocity loop ("
         << static_cast<int>(100.0 * loop.stickingFraction() + 0.5) << " % sticking, enclosed area "
         << loop.signedArea() << " N m/s in (dv, f))\n";

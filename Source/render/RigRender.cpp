@@ -5,10 +5,10 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <vector>
 
 #include "WavWriter.h"
+#include "config/AtomicFile.h"
 #include "config/ConfigError.h"
 #include "lab/scan/Figures.h"
 #include "physics/rig/OscillatorRig.h"
@@ -53,19 +53,16 @@ std::string fixed(double value, int digits)
 // Writes the loop's samples; the friction coefficient mu = f / N is what seed 000 Figs. 2c and 6 plot.
 void writeLoopCsv(const std::vector<LoopRow>& rows, const std::string& path)
 {
-    std::ofstream file(path);
-    if (!file)
-        throw config::ConfigError("--loop", "", "a writable location for " + path,
-                                  "a path that cannot be written");
-    file << "time,slidingSpeed,frictionForce,contactTemperature,normalForce,frictionCoefficient\n";
+    std::string text = "time,slidingSpeed,frictionForce,contactTemperature,normalForce,frictionCoefficient\n";
     char line[200];
     for (const LoopRow& r : rows)
     {
         const double mu = r.normalForce > 0.0 ? r.frictionForce / r.normalForce : 0.0;
         std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", r.time, r.slidingSpeed,
                       r.frictionForce, r.contactTemperature, r.normalForce, mu);
-        file << line;
+        text += line;
     }
+    config::writeFileAtomically(path, text);
 }
 
 // Signed area of the (dv, mu) loop by the shoelace formula: > 0 anticlockwise, the sense of seed 000 Fig. 2c.

@@ -9,6 +9,7 @@
 
 #include "CommandLine.h"
 #include "SynthDataOptions.h"
+#include "config/AtomicFile.h"
 #include "config/ConfigError.h"
 #include "discovery/DatasetReader.h"
 #include "discovery/DatasetWriter.h"
@@ -84,15 +85,6 @@ OutputPaths checkPaths(const SynthDataCommandLine& c)
     return p;
 }
 
-void writeText(const fs::path& file, const std::string& text)
-{
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.close();
-    if (!out)
-        throw ConfigError(file.string(), "", "a writable file", "a write error");
-}
-
 void describe(const discovery::SynthPlan& plan, const SynthDataCommandLine& c, std::ostream& out)
 {
     const auto& s = c.settings.scan;
@@ -140,7 +132,7 @@ void publish(const discovery::SynthPlan& plan, const OutputPaths& paths, const s
         auto truth = discovery::truthJson(plan, paths.out.string());
         if (generator == "independent")
             truth["independent"] = discovery::independentTruth(plan).toJson();
-        writeText(truthPartial, truth.dump(2) + "\n");
+        config::writeFileAtomically(truthPartial, truth.dump(2) + "\n");
     }
     std::error_code ec;
     if (fs::exists(paths.out, ec))

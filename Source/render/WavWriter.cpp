@@ -7,8 +7,11 @@
 namespace rosin::cli
 {
 
+// The samples go to a temporary file beside the target, which replaces the target only when close() has
+// finished the header: a render that fails or is killed leaves the old file (or none), never a torn one.
 struct WavWriter::Impl
 {
+    std::unique_ptr<juce::TemporaryFile> temporary;
     std::unique_ptr<juce::AudioFormatWriter> writer;
 };
 
@@ -21,8 +24,8 @@ WavWriter::WavWriter(const std::string& path, double sampleRate, int numChannels
         throw std::runtime_error(path + ": cannot write a WAV file: it is a directory");
     if (!file.getParentDirectory().isDirectory())
         throw std::runtime_error(path + ": cannot write a WAV file: the folder does not exist");
-    file.deleteFile();
-    auto stream = std::make_unique<juce::FileOutputStream>(file);
+    impl_->temporary = std::make_unique<juce::TemporaryFile>(file);
+    auto stream = std::make_unique<juce::FileOutputStream>(impl_->temporary->getFile());
     if (!stream->openedOk())
         throw std::runtime_error(
             path + ": cannot write a WAV file: " + stream->getStatus().getErrorMessage().toStdString());
@@ -61,6 +64,8 @@ void WavWriter::close()
     impl_->writer.reset(); // the destructor rewrites the header with the final length
     if (!flushed)
         throw std::runtime_error(path_ + ": could not finish the WAV file");
+    if (!impl_->temporary->overwriteTargetFileWithTemporary())
+        throw std::runtime_error(path_ + ": could not replace the file with the finished render");
 }
 
 } // namespace rosin::cli

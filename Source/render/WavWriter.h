@@ -10,9 +10,11 @@ namespace rosin::cli
 class WavWriter
 {
   public:
-    /// Creates (or replaces) `path`, relative to the working directory unless absolute. Channels are written
-    /// as a discrete layout (no speaker mask), values unchanged (no clipping, no dither). `comment` goes into
-    /// the RIFF INFO comment (ICMT). Throws std::runtime_error naming the file if it cannot be created.
+    /// Will replace `path` (relative to the working directory unless absolute) when close() succeeds; until
+    /// then the samples go to a temporary file beside it, and a writer destroyed without close() leaves the
+    /// old file as it was. Channels are written as a discrete layout (no speaker mask), values unchanged (no
+    /// clipping, no dither). `comment` goes into the RIFF INFO comment (ICMT). Throws std::runtime_error
+    /// naming the file if it cannot be created.
     WavWriter(const std::string& path, double sampleRate, int numChannels, const std::string& comment = {});
     ~WavWriter();
     WavWriter(const WavWriter&) = delete;
@@ -20,7 +22,7 @@ class WavWriter
 
     /// Appends numSamples frames; channels[c] points at numSamples values. Throws on a write error.
     void write(const float* const* channels, int numSamples);
-    /// Finalises the header and closes the file (also done by the destructor, which cannot report errors).
+    /// Finalises the header and puts the file in place (atomically: a rename). Throws on failure.
     void close();
 
     int numChannels() const noexcept { return numChannels_; }

@@ -5,9 +5,11 @@
 
 #include "CliSupport.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <sys/wait.h>
 
@@ -41,17 +43,24 @@ class ScanCli : public ::testing::Test
     /// the interrupt lands mid-scan however loaded the machine is.
     Result scanInterruptedMidway(const std::vector<std::string>& args, const std::string& outDir)
     {
+        return scanSignalled(args, outDir, 2, "INT", 0.0);
+    }
+    /// Starts the scan in the background, waits until its partial file holds `lines` lines (header included)
+    /// or the scan ends, sleeps `seconds` more and sends `signal` (INT, KILL).
+    Result scanSignalled(const std::vector<std::string>& args, const std::string& outDir, std::size_t lines,
+                         const std::string& signal, double seconds)
+    {
         std::string run =
             "ROSIN_PRESET_DIR=" + quote(ROSIN_SOURCE_PRESET_DIR) + " " + quote(ROSIN_BINARY) + " scan";
         for (const auto& a : args)
             run += " " + quote(a);
         const std::string partial = quote(dir.path() + "/" + outDir + "/scan.partial.csv");
-        const std::string script = "cd " + quote(dir.path()) + " && { " + run + " >" +
-                                   quote(dir.path() + "/stdout.txt") + " 2>" +
-                                   quote(dir.path() + "/stderr.txt") +
-                                   " & pid=$!; while kill -0 $pid 2>/dev/null && [ \"$(cat " + partial +
-                                   " 2>/dev/null | wc -l)\" -lt 2 ]; do sleep 0.01; done; kill -INT $pid "
-                                   "2>/dev/null; wait $pid; }";
+        const std::string script =
+            "cd " + quote(dir.path()) + " && { " + run + " >" + quote(dir.path() + "/stdout.txt") + " 2>" +
+            quote(dir.path() + "/stderr.txt") + " & pid=$!; while kill -0 $pid 2>/dev/null && [ \"$(cat " +
+            partial + " 2>/dev/null | wc -l)\" -lt " + std::to_string(lines) +
+            " ]; do sleep 0.002; done; sleep " + std::to_string(seconds) + "; kill -" + signal +
+            " $pid 2>/dev/null; wait $pid; }";
         const int raw = std::system(("bash -c " + quote(script)).c_str());
         return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir.path() + "/stdout.txt"),
                 slurp(dir.path() + "/stderr.txt")};
@@ -226,6 +235,48 @@ TEST_F(ScanCli, InterruptedScanResumes)
     EXPECT_FALSE(fs::exists(path("resumed/scan.partial.csv")));
 }
 
+// SIGKILL (no handler can run) at random moments, again and again: every cell finished before a kill is still
+// there after it, no cut-off row is ever read back, and the last run's files equal an uninterrupted run's.
+TEST_F(ScanCli, KilledScanLosesNoFinishedCellAndReadsBackNoTornRow)
+{
+    const std::vector<std::string> args = {"guettler", "--friction",   "classical", "--beta",
+                                           "0.0899",   "--grid",       "16",        "--threads",
+                                           "2",        "--no-figures", "--out"};
+    auto with = [&](const std::string& out)
+    {
+        auto a = args;
+        a.push_back(out);
+        return a;
+    };
+    std::mt19937 random(20261127);
+    std::size_t finishedBefore = 0, kills = 0;
+    for (int round = 0; round < 8; ++round)
+    {
+        const std::size_t wait =
+            1 + finishedBefore + std::uniform_int_distribution<std::size_t>(3, 30)(random);
+        const double late = std::uniform_real_distribution<double>(0.0, 0.004)(random);
+        const Result r = scanSignalled(with("killed"), "killed", wait, "KILL", late);
+        if (r.status == 0)
+            break; // finished before the kill
+        ++kills;
+        // Rows the partial file holds whole (newline-terminated) after the kill: none may be lost next time.
+        const std::string partial = slurp(path("killed/scan.partial.csv"));
+        const std::size_t whole = static_cast<std::size_t>(std::count(partial.begin(), partial.end(), '\n'));
+        const std::size_t finished = whole > 0 ? whole - 1 : 0;
+        EXPECT_GE(finished, finishedBefore) << "round " << round << ": finished cells were lost";
+        finishedBefore = finished;
+    }
+    EXPECT_GE(kills, 3u) << "the scan finished before most kills; the test did not test much";
+    const Result resumed = scan(with("killed"));
+    ASSERT_EQ(resumed.status, 0) << resumed.err;
+    EXPECT_EQ(resumed.err.find("warning:"), std::string::npos) << resumed.err;
+    ASSERT_EQ(scan(with("whole")).status, 0);
+    EXPECT_TRUE(sameFiles("whole", "killed"));
+    std::printf(
+        "[figure] %zu SIGKILLs, %zu cells finished before the last; files equal an uninterrupted run\n",
+        kills, finishedBefore);
+}
+
 TEST_F(ScanCli, MissingFigureScriptIsAWarning)
 {
     auto args = tiny("figures");
@@ -238,6 +289,36 @@ TEST_F(ScanCli, MissingFigureScriptIsAWarning)
         << r.err;
     EXPECT_FALSE(slurp(path("figures/scan.csv")).empty());
     EXPECT_FALSE(slurp(path("figures/scan.json")).empty());
+}
+
+// The figure scripts are found relative to the executable: an installed layout (PREFIX/bin/rosin with
+// PREFIX/share/rosin/figures) uses its own scripts, and the build tree has its copy beside build/rosin.
+TEST_F(ScanCli, FigureScriptsAreFoundBesideTheExecutable)
+{
+    const fs::path binary(ROSIN_BINARY);
+    const fs::path beside = binary.parent_path() / "share/rosin/figures/plot_scan.py";
+    EXPECT_EQ(slurp(beside),
+              slurp(fs::path(ROSIN_SOURCE_PRESET_DIR).parent_path() / "Source/lab/figures/plot_scan.py"))
+        << beside << " is not the source tree's script";
+
+    const fs::path prefix = path("prefix");
+    fs::create_directories(prefix / "bin");
+    fs::create_directories(prefix / "share/rosin/figures");
+    fs::copy_file(binary, prefix / "bin/rosin");
+    {
+        // A stand-in script that leaves a mark where the real one would draw.
+        std::ofstream script(prefix / "share/rosin/figures/plot_scan.py");
+        script << "import sys\nopen(sys.argv[1] + '/drawn-by-installed-script', 'w').write('yes')\n";
+    }
+    auto args = tiny("installed");
+    args.erase(std::find(args.begin(), args.end(), "--no-figures"));
+    std::string command = "cd " + quote(dir.path()) + " && env -u ROSIN_FIGURE_SCRIPT ROSIN_PRESET_DIR=" +
+                          quote(ROSIN_SOURCE_PRESET_DIR) + " " + quote((prefix / "bin/rosin").string()) +
+                          " scan";
+    for (const auto& a : args)
+        command += " " + quote(a);
+    ASSERT_EQ(std::system((command + " >/dev/null 2>&1").c_str()), 0);
+    EXPECT_EQ(slurp(path("installed/drawn-by-installed-script")), "yes");
 }
 
 TEST_F(ScanCli, CompareDrawsTheDifferenceOfTwoScans)

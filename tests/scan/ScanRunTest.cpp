@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <filesystem>
+#include <sstream>
 
 #include "SmallScan.h"
 #include "config/TempFiles.h"
@@ -167,6 +168,50 @@ TEST(ScanRun, TornLastLineIsComputedAgain)
     const RunReport r = test::run(test::smallSpec(), dir, test::quietOptions(2));
     EXPECT_EQ(r.resumed, 2u);
     EXPECT_TRUE(outputs(dir) == one);
+}
+
+// A finished scan.csv damaged by hand or by a crash of something else: every bad line is named with its line
+// number and why, its cell is computed again, and the files come out as an undamaged run's.
+TEST(ScanRun, DamagedFinishedScanIsNamedAndItsBadRowsComputedAgain)
+{
+    rosin::test::TempDir tmp;
+    const Outputs one = reference(tmp);
+    const std::string dir = tmp.path() + "/single";
+    std::vector<std::string> lines;
+    std::istringstream in(one.csv);
+    for (std::string line; std::getline(in, line);)
+        lines.push_back(line);
+    ASSERT_EQ(lines.size(), 25u); // header + 24 cells
+    auto replaceField = [](std::string row, int field, const std::string& value)
+    {
+        std::size_t begin = 0;
+        for (int f = 0; f < field; ++f)
+            begin = row.find(',', begin) + 1;
+        return row.replace(begin, row.find(',', begin) - begin, value);
+    };
+    std::string damaged = lines[0] + "\n";
+    damaged += lines[1] + "\n";                         // cell 0 kept
+    damaged += replaceField(lines[2], 1, "0.2") + "\n"; // cell 1: beta edited (line 3)
+    damaged += replaceField(lines[3], 6, "abc") + "\n"; // cell 2: muStatic not a number (line 4)
+    damaged += lines[4] + "\n" + replaceField(lines[4], 10, "1234") + "\n"; // cell 3 twice (lines 5, 6)
+    for (std::size_t i = 5; i < 20; ++i)                                    // cells 4..18 kept
+        damaged += lines[i] + "\n";
+    damaged += lines[20].substr(0, 9); // cut off in cell 19; 20..23 missing
+    writeFileAtomically(dir + "/scan.csv", damaged);
+
+    std::ostringstream out, err;
+    const RunReport again = runScan(test::smallSpec(), dir, test::quietOptions(2), out, err);
+    const std::string warnings = err.str();
+    EXPECT_TRUE(again.complete);
+    EXPECT_EQ(again.computed, 3u + 1u + 4u); // cells 1, 2, 3; 19 cut off; 20..23 missing
+    EXPECT_TRUE(outputs(dir) == one);
+    for (const char* expected :
+         {"scan.csv: line 3: cell 1 has other coordinates than the grid's",
+          "scan.csv: line 4: field muStatic: expected a number but got \"abc\"",
+          "scan.csv: line 6: cell 3 appears twice with different results (also line 5)",
+          "scan.csv: line 22: cut off (no newline at the end of the file)"})
+        EXPECT_NE(warnings.find(expected), std::string::npos) << expected << "\n" << warnings;
+    EXPECT_NE(warnings.find("; the cell is computed again"), std::string::npos) << warnings;
 }
 
 TEST(ScanRun, PartialFileOfAnotherSpecificationIsRefused)

@@ -1,8 +1,7 @@
 #include "Figures.h"
 
-#include <cstdlib>
-
 #include "ChildProcess.h"
+#include "HelperScripts.h"
 
 #ifndef ROSIN_FIGURE_SCRIPT
 #define ROSIN_FIGURE_SCRIPT ""
@@ -13,8 +12,7 @@ namespace rosin::scan
 
 std::string figureScriptPath()
 {
-    const char* overridden = std::getenv("ROSIN_FIGURE_SCRIPT");
-    return overridden != nullptr && *overridden != '\0' ? overridden : ROSIN_FIGURE_SCRIPT;
+    return findHelperScript("plot_scan.py", "ROSIN_FIGURE_SCRIPT", ROSIN_FIGURE_SCRIPT);
 }
 
 bool runFigureScript(const std::vector<std::string>& arguments, std::ostream& err,

@@ -1,7 +1,8 @@
 #pragma once
-// The PNG figures of a finished scan, drawn by the Python script Source/lab/figures/plot_scan.py (run as
-// `python3 SCRIPT DIR` after scan.csv and scan.json are written). Figures are optional: when python3, the
-// script or its libraries are missing, a warning names what is missing and the scan's files stay as they are.
+// The PNG figures of a finished scan, drawn by the Python script plot_scan.py (Source/lab/figures; found as
+// HelperScripts.h says; run as `python3 SCRIPT DIR` after scan.csv and scan.json are written). Figures are
+// optional: when python3, the script or its libraries are missing, a warning names what is missing and the
+// scan's files stay as they are.
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -10,7 +11,7 @@
 namespace rosin::scan
 {
 
-/// $ROSIN_FIGURE_SCRIPT if set and non-empty, else the script of the source tree this was built from.
+/// plot_scan.py, found as HelperScripts.h says ($ROSIN_FIGURE_SCRIPT overrides).
 std::string figureScriptPath();
 /// Runs the script on `dir`. Returns true if it succeeded; otherwise writes a warning to `err`.
 bool drawFigures(const std::filesystem::path& dir, std::ostream& err);

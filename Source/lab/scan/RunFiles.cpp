@@ -1,12 +1,18 @@
 #include "RunFiles.h"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <functional>
+#include <ostream>
 #include <sstream>
 #include <system_error>
 
 #include "CsvRow.h"
 #include "ScanError.h"
 #include "SpecJson.h"
+#include "config/AtomicFile.h"
+#include "config/ConfigError.h"
 
 namespace rosin::scan
 {
@@ -40,24 +46,46 @@ std::string readTextFile(const fs::path& file)
 
 void writeFileAtomically(const fs::path& file, const std::string& text)
 {
-    const fs::path temporary = file.string() + ".tmp";
+    try
     {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out << text;
-        out.flush();
-        if (!out)
-            throw ScanError(temporary.string() + ": cannot be written");
+        config::writeFileAtomically(file, text);
     }
-    std::error_code ec;
-    fs::rename(temporary, file, ec);
-    if (ec)
-        throw ScanError(file.string() + ": cannot be written (" + ec.message() + ")");
+    catch (const config::ConfigError& e)
+    {
+        throw ScanError(e.what());
+    }
 }
 
-RowMap readRowsFile(const fs::path& file, const ScanSpec& spec, bool tolerateTornLine)
+namespace
+{
+bool sameCoordinate(double stored, double nominal)
+{
+    return std::abs(stored - nominal) <= 1e-7 * std::max(1.0, std::abs(nominal));
+}
+
+// What is wrong with a parsed row of this scan, or empty: its cell must lie on the grid, at the grid's own
+// coordinates (a row moved or edited by hand no longer matches them).
+std::string rowProblem(const CellResult& row, const ScanSpec& spec)
+{
+    if (row.cell >= spec.cellCount())
+        return "cell " + std::to_string(row.cell) + " is outside the grid of " +
+               std::to_string(spec.cellCount()) + " cells";
+    const CellSettings nominal = cellSettings(spec, row.cell);
+    if (!sameCoordinate(row.beta, nominal.beta) || !sameCoordinate(row.bowForce, nominal.force) ||
+        !sameCoordinate(row.second, nominal.second))
+        return "cell " + std::to_string(row.cell) + " has other coordinates than the grid's (beta, force, " +
+               std::string(spec.kind == ScanKind::Guettler ? "acceleration" : "bow speed") + ")";
+    return {};
+}
+
+// Walks a rows file. Every bad line goes to `bad(line, what)`; strict readers throw from it, lenient ones
+// note it and go on. Returns the good rows; a cell that appears twice with different contents is dropped.
+RowMap walkRows(const fs::path& file, const ScanSpec& spec, bool tolerateTornLine,
+                const std::function<void(std::size_t, const std::string&)>& bad)
 {
     const std::string text = readTextFile(file);
     RowMap rows;
+    std::map<std::size_t, std::size_t> firstLine;
     std::size_t begin = 0, lineNumber = 0;
     while (begin < text.size())
     {
@@ -67,14 +95,20 @@ RowMap readRowsFile(const fs::path& file, const ScanSpec& spec, bool tolerateTor
         const std::string line =
             text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
         begin = end == std::string::npos ? text.size() : end + 1;
-        auto fail = [&](const std::string& what)
-        { throw ScanError(file.string() + ": line " + std::to_string(lineNumber) + ": " + what); };
         if (++lineNumber == 1)
         {
             if (line != csvHeader(spec.kind))
-                fail("expected the header \"" + csvHeader(spec.kind) + "\" of a " + kindName(spec.kind) +
-                     " scan");
+            {
+                bad(1, "expected the header \"" + csvHeader(spec.kind) + "\" of a " + kindName(spec.kind) +
+                           " scan");
+                return {}; // without its header no row can be trusted
+            }
             continue;
+        }
+        if (end == std::string::npos)
+        {
+            bad(lineNumber, "cut off (no newline at the end of the file)");
+            break;
         }
         CellResult row;
         try
@@ -83,20 +117,48 @@ RowMap readRowsFile(const fs::path& file, const ScanSpec& spec, bool tolerateTor
         }
         catch (const std::invalid_argument& e)
         {
-            fail(e.what());
+            bad(lineNumber, e.what());
+            continue;
         }
-        if (row.cell >= spec.cellCount())
-            fail("cell " + std::to_string(row.cell) + " is outside the grid of " +
-                 std::to_string(spec.cellCount()) + " cells");
+        if (const std::string problem = rowProblem(row, spec); !problem.empty())
+        {
+            bad(lineNumber, problem);
+            continue;
+        }
         const auto [at, inserted] = rows.emplace(row.cell, line);
-        if (!inserted && at->second != line)
-            fail("cell " + std::to_string(row.cell) + " appears twice with different results");
+        if (inserted)
+            firstLine[row.cell] = lineNumber;
+        else if (at->second != line)
+        {
+            bad(lineNumber, "cell " + std::to_string(row.cell) +
+                                " appears twice with different results (also line " +
+                                std::to_string(firstLine[row.cell]) + ")");
+            rows.erase(at);
+        }
     }
-    if (lineNumber == 0 && tolerateTornLine)
-        return rows; // killed while writing the header
-    if (lineNumber == 0)
-        throw ScanError(file.string() + ": empty (expected the header \"" + csvHeader(spec.kind) + "\")");
+    if (lineNumber == 0 && !tolerateTornLine)
+        bad(0, "empty (expected the header \"" + csvHeader(spec.kind) + "\")");
     return rows;
+}
+} // namespace
+
+RowMap readRowsFile(const fs::path& file, const ScanSpec& spec, bool tolerateTornLine)
+{
+    return walkRows(file, spec, tolerateTornLine,
+                    [&](std::size_t line, const std::string& what) {
+                        throw ScanError(file.string() + (line > 0 ? ": line " + std::to_string(line) : "") +
+                                        ": " + what);
+                    });
+}
+
+RowMap readGoodRows(const fs::path& file, const ScanSpec& spec, bool tolerateTornLine,
+                    std::vector<std::string>& problems)
+{
+    return walkRows(file, spec, tolerateTornLine,
+                    [&](std::size_t line, const std::string& what) {
+                        problems.push_back(file.string() +
+                                           (line > 0 ? ": line " + std::to_string(line) : "") + ": " + what);
+                    });
 }
 
 void writeRowsFile(const fs::path& file, ScanKind kind, const RowMap& rows)
@@ -110,21 +172,31 @@ void writeRowsFile(const fs::path& file, ScanKind kind, const RowMap& rows)
 namespace
 {
 // The rows of an earlier run of the same specification, copied into the partial file, to which the cells
-// still missing are appended.
-RowMap resumeFrom(const fs::path& file, const RunFiles& files, const ScanSpec& spec, bool tolerateTornLine)
+// still missing are appended. Bad rows are named on `warnings` and computed again.
+RowMap resumeFrom(const fs::path& file, const RunFiles& files, const ScanSpec& spec, bool tolerateTornLine,
+                  std::ostream& warnings)
 {
-    RowMap rows = readRowsFile(file, spec, tolerateTornLine);
-    for (const auto& [cell, row] : rows)
-        if (!files.owns(cell))
-            throw ScanError(file.string() + ": cell " + std::to_string(cell) +
-                            " does not belong to this run's shard");
+    std::vector<std::string> problems;
+    RowMap rows = readGoodRows(file, spec, tolerateTornLine, problems);
+    for (auto it = rows.begin(); it != rows.end();)
+        if (!files.owns(it->first))
+        {
+            problems.push_back(file.string() + ": cell " + std::to_string(it->first) +
+                               " does not belong to this run's shard");
+            it = rows.erase(it);
+        }
+        else
+            ++it;
+    for (const auto& problem : problems)
+        warnings << "warning: " << problem << "; the cell is computed again\n";
     // Rewritten whole, so that new rows are not appended to a torn last line.
     writeRowsFile(files.partial(), spec.kind, rows);
     return rows;
 }
 } // namespace
 
-RowMap startRun(const RunFiles& files, const ScanSpec& spec, const std::string& specText)
+RowMap startRun(const RunFiles& files, const ScanSpec& spec, const std::string& specText,
+                std::ostream& warnings)
 {
     std::error_code ec;
     fs::create_directories(files.dir(), ec);
@@ -134,7 +206,7 @@ RowMap startRun(const RunFiles& files, const ScanSpec& spec, const std::string& 
     if (!fs::exists(files.partial()))
     {
         if (fs::exists(files.rows()) && fs::exists(files.spec()) && readTextFile(files.spec()) == specText)
-            return resumeFrom(files.rows(), files, spec, false); // a finished run: outputs written again
+            return resumeFrom(files.rows(), files, spec, false, warnings); // finished: outputs written again
         writeFileAtomically(files.spec(), specText);
         return {};
     }
@@ -147,7 +219,7 @@ RowMap startRun(const RunFiles& files, const ScanSpec& spec, const std::string& 
                         files.spec().string() +
                         "; this scan vs the stored one: " + describeSpecDifference(specText, stored) +
                         "). Use another --out folder, or remove the partial file to start afresh");
-    return resumeFrom(files.partial(), files, spec, true);
+    return resumeFrom(files.partial(), files, spec, true, warnings);
 }
 
 } // namespace rosin::scan

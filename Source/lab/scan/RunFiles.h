@@ -10,7 +10,9 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <ostream>
 #include <string>
+#include <vector>
 
 #include "ScanSpec.h"
 
@@ -53,14 +55,21 @@ std::string shardStem(const ShardId& shard);
 /// against the specification and returns its rows (resume), or returns the rows of a finished run of the
 /// same specification (STEM.csv: nothing to compute, the outputs are written again), or writes the
 /// specification and starts afresh (a finished run of another specification is replaced when this one
-/// completes). Throws ScanError if the partial file belongs to another specification or a file cannot be
-/// read.
-RowMap startRun(const RunFiles& files, const ScanSpec& spec, const std::string& specText);
+/// completes). Rows read back that are malformed, off the grid, cut off or contradicted (a damaged or
+/// hand-edited file) are named on `warnings` and left out, so their cells are computed again. Throws
+/// ScanError if the partial file belongs to another specification or a file cannot be read.
+RowMap startRun(const RunFiles& files, const ScanSpec& spec, const std::string& specText,
+                std::ostream& warnings);
 
-/// Reads a rows file (partial or complete) of this kind: the header, then one row per line. A last line
-/// without its newline (a run killed mid-write) is dropped when `tolerateTornLine`. Throws ScanError naming
-/// the file and line if a row is malformed, out of range, or repeated with different contents.
+/// Reads a rows file (partial or complete) of this kind: the header, then one row per line, each on the
+/// spec's grid at its own coordinates. A last line without its newline (a run killed mid-write) is dropped
+/// when `tolerateTornLine`. Throws ScanError naming the file and line if a row is malformed, off the grid, or
+/// repeated with different contents.
 RowMap readRowsFile(const std::filesystem::path& file, const ScanSpec& spec, bool tolerateTornLine);
+/// The same, but a bad line is described in `problems` ("FILE: line N: what") and left out instead; a cell
+/// repeated with different contents is left out altogether.
+RowMap readGoodRows(const std::filesystem::path& file, const ScanSpec& spec, bool tolerateTornLine,
+                    std::vector<std::string>& problems);
 
 /// Writes the header and the rows in cell order (to a temporary file, then renamed into place).
 void writeRowsFile(const std::filesystem::path& file, ScanKind kind, const RowMap& rows);

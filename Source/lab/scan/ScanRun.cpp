@@ -53,7 +53,7 @@ RunReport runScan(const ScanSpec& spec, const fs::path& dir, const RunOptions& o
     const std::string text = specText(spec);
     const RunFiles files(dir, o.shard);
     const bool interrupted = fs::exists(files.partial());
-    RowMap rows = startRun(files, spec, text);
+    RowMap rows = startRun(files, spec, text, err);
     RunReport report;
     report.total = ownedCells(spec, files);
     report.resumed = rows.size();

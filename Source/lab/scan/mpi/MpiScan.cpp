@@ -42,7 +42,7 @@ struct MpiSession
 // Rank 0 prepares the folder (startRun) and broadcasts either the done cells or that it failed (then every
 // rank gets nothing, and rank 0 holds the failure).
 std::optional<RowMap> shareStart(const MpiSession& mpi, const RunFiles& files, const ScanSpec& spec,
-                                 const std::string& text, std::exception_ptr& failure)
+                                 const std::string& text, std::ostream& err, std::exception_ptr& failure)
 {
     RowMap rows;
     int ok = 1;
@@ -50,7 +50,7 @@ std::optional<RowMap> shareStart(const MpiSession& mpi, const RunFiles& files, c
     {
         try
         {
-            rows = startRun(files, spec, text);
+            rows = startRun(files, spec, text, err);
         }
         catch (...)
         {
@@ -194,7 +194,7 @@ void runRanks(const MpiSession& mpi, const ScanSpec& spec, const fs::path& dir, 
 {
     const std::string text = specText(spec);
     const RunFiles files(dir, std::nullopt);
-    std::optional<RowMap> started = shareStart(mpi, files, spec, text, failure);
+    std::optional<RowMap> started = shareStart(mpi, files, spec, text, err, failure);
     if (!started)
         return;
     RowMap& rows = *started;
