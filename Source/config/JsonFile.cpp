@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "JsonObject.h"
 
@@ -18,9 +19,16 @@ nlohmann::json readJsonFile(const std::string& path)
     std::ifstream in(path, std::ios::binary);
     if (!in)
         throw ConfigError(path, "", "a readable file", "a file that cannot be opened");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parseJsonText(text.str(), path);
+}
+
+nlohmann::json parseJsonText(const std::string& text, const std::string& path)
+{
     try
     {
-        return nlohmann::json::parse(in);
+        return nlohmann::json::parse(text);
     }
     catch (const nlohmann::json::parse_error& e)
     {

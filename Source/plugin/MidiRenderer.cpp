@@ -41,9 +41,14 @@ juce::MidiMessageSequence readMidiFile(const juce::File& file)
     juce::FileInputStream in(file);
     if (!in.openedOk())
         throw std::runtime_error(file.getFullPathName().toStdString() + ": cannot open the MIDI file");
+    return readMidiStream(in, file.getFullPathName().toStdString());
+}
+
+juce::MidiMessageSequence readMidiStream(juce::InputStream& in, const std::string& name)
+{
     juce::MidiFile midi;
     if (!midi.readFrom(in))
-        throw std::runtime_error(file.getFullPathName().toStdString() + ": not a standard MIDI file");
+        throw std::runtime_error(name + ": not a standard MIDI file");
     midi.convertTimestampTicksToSeconds();
     juce::MidiMessageSequence merged;
     for (int t = 0; t < midi.getNumTracks(); ++t)

@@ -36,5 +36,7 @@ MidiRenderResult renderMidi(RosinProcessor& processor, const juce::MidiMessageSe
 
 /// All tracks of a MIDI file merged into one sequence with timestamps in seconds (tempo map applied).
 juce::MidiMessageSequence readMidiFile(const juce::File& file);
+/// The same from a stream; `name` names the source in errors (std::runtime_error).
+juce::MidiMessageSequence readMidiStream(juce::InputStream& in, const std::string& name);
 
 } // namespace rosin::plugin

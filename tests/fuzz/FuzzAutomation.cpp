@@ -1,0 +1,23 @@
+// Automation files ("rosin-automation/1", rosin render --automation): JSON text -> validated lanes, each
+// read at a few times. Accepted lanes must give finite values.
+#include "FuzzTarget.h"
+#include "config/ConfigError.h"
+#include "config/JsonFile.h"
+#include "plugin/AutomationLanes.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+    using namespace rosin;
+    try
+    {
+        const auto root = config::parseJsonText(fuzz::asText(data, size), "automation.json");
+        const plugin::AutomationLanes lanes = plugin::parseAutomation(root, "automation.json");
+        for (const auto& lane : lanes.lanes)
+            for (double t : {-1.0, 0.0, 0.37, 5.0, 1000.0})
+                fuzz::requireFinite(lane.valueAt(t), "automation value");
+    }
+    catch (const config::ConfigError&)
+    {
+    }
+    return 0;
+}

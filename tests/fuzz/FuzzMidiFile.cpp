@@ -1,0 +1,44 @@
+// Standard MIDI files (rosin render --midi): bytes -> JUCE's reader with Rosin's merge and tempo map -> every
+// channel message through the bow controller of a four-string cello, which must keep its inputs finite.
+#include <juce_audio_basics/juce_audio_basics.h>
+
+#include "FuzzTarget.h"
+#include "gesture/MidiBytes.h"
+#include "gesture/MidiGestureController.h"
+#include "plugin/MidiRenderer.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+    using namespace rosin;
+    juce::MidiMessageSequence sequence;
+    try
+    {
+        juce::MemoryInputStream in(data, size, false);
+        sequence = plugin::readMidiStream(in, "fuzz.mid");
+    }
+    catch (const std::runtime_error&)
+    {
+        return 0;
+    }
+    static const double openStrings[] = {65.41, 98.0, 146.83, 220.0};
+    gesture::MidiGestureController controller;
+    controller.prepare(openStrings, 4, 8000.0);
+    physics::BowInput inputs[gesture::MidiGestureController::kMaxStrings];
+    const int events = std::min(sequence.getNumEvents(), 4096);
+    for (int e = 0; e < events; ++e)
+    {
+        const juce::MidiMessage& message = sequence.getEventPointer(e)->message;
+        fuzz::requireFinite(message.getTimeStamp(), "event time");
+        gesture::GestureEvent event;
+        if (gesture::decodeMidi(message.getRawData(), message.getRawDataSize(), 0, event))
+            controller.handleEvent(event);
+        controller.next(inputs);
+        for (int s = 0; s < controller.stringCount(); ++s)
+        {
+            fuzz::requireFinite(inputs[s].bowForce, "bow force");
+            fuzz::requireFinite(inputs[s].bowVelocity, "bow velocity");
+            fuzz::requireFinite(inputs[s].beta, "beta");
+        }
+    }
+    return 0;
+}
