@@ -73,9 +73,9 @@ void refreshHostValues(juce::AudioProcessorValueTreeState& state)
         const auto* raw = state.getRawParameterValue(parameter->getParameterID());
         if (raw == nullptr)
             continue;
-        const float wanted = parameter->convertTo0to1(raw->load());
-        if (parameter->getValue() != wanted)
-            parameter->setValueNotifyingHost(wanted);
+        // Sent even when the value inside did not change: a host that set a switch to 0.59 holds 0.59 while
+        // the plugin holds "on", and the LV2 host learns values only from the plugin's notifications.
+        parameter->setValueNotifyingHost(parameter->convertTo0to1(raw->load()));
     }
 }
 

@@ -27,9 +27,9 @@ std::optional<std::string> unparseableState(const void* data, int sizeInBytes);
 std::vector<std::string> sanitiseParameterValues(juce::ValueTree& tree,
                                                  juce::AudioProcessorValueTreeState& state);
 
-/// Sends every parameter's value to the host (setValueNotifyingHost) where the host's normalised copy
-/// differs from the state's value, e.g. a switch the host had set to 0.59 ("on") that the state restores
-/// as on.
+/// Sends every parameter's value to the host (setValueNotifyingHost), also where it did not change inside:
+/// a switch the host had set to 0.59 reads as "on", a restored "on" changes nothing inside, and the host's
+/// copy would stay 0.59 (pluginval's state check; JUCE's LV2 host learns values only this way).
 void refreshHostValues(juce::AudioProcessorValueTreeState& state);
 
 } // namespace rosin::plugin

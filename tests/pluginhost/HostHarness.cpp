@@ -242,4 +242,13 @@ void releaseFormats()
     formatManager.reset();
 }
 
+std::vector<int> pluginParameters(juce::AudioPluginInstance& plugin)
+{
+    std::vector<int> indices;
+    for (auto* p : plugin.getParameters())
+        if (p->isAutomatable() && p != plugin.getBypassParameter() && p->getName(64) != "Program")
+            indices.push_back(p->getParameterIndex());
+    return indices;
+}
+
 } // namespace rosin::pluginhost

@@ -53,6 +53,10 @@ Render render(juce::AudioPluginInstance& plugin, const RenderPlan& plan);
 /// A note from sample 0 to noteSeconds, rendered for `seconds` with the given block sizes.
 RenderPlan notePlan(double sampleRate, std::vector<int> blockSizes, double seconds = 0.4,
                     double noteSeconds = 0.3);
+/// The plugin's own parameters: not the host-made ones (JUCE's VST3 wrapper adds bypass, a program-change
+/// parameter and 2048 non-automatable "MIDI CC" parameters), which a preset does not hold.
+std::vector<int> pluginParameters(juce::AudioPluginInstance& plugin);
+
 /// Frees the format manager (before JUCE's message manager goes).
 void releaseFormats();
 

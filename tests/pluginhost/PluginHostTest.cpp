@@ -131,17 +131,6 @@ TEST_P(PluginHost, EveryParameterSurvivesFuzzing)
     destroy(plugin); // a rebuild may be running (see settleLv2)
 }
 
-/// The plugin's own parameters: not the host-made ones (JUCE's VST3 wrapper adds bypass, a program-change
-/// parameter and 2048 non-automatable "MIDI CC" parameters), which a preset does not hold.
-std::vector<int> pluginParameters(juce::AudioPluginInstance& plugin)
-{
-    std::vector<int> indices;
-    for (auto* p : plugin.getParameters())
-        if (p->isAutomatable() && p != plugin.getBypassParameter() && p->getName(64) != "Program")
-            indices.push_back(p->getParameterIndex());
-    return indices;
-}
-
 /// A saved and a restored value agree: exactly for continuous parameters, by their text for stepped ones (a
 /// host caches the value it set, the plugin rounds it to the step).
 void expectSameValue(juce::AudioProcessorParameter& saved, juce::AudioProcessorParameter& restored,
