@@ -123,6 +123,25 @@ TEST(PresetLoader, UnknownNameListsTheAvailablePresets)
     }
 }
 
+// Found by fuzzing: a number beyond double's range escaped as nlohmann's out_of_range exception (a crash
+// through std::terminate in the fuzz target); it is a JSON error naming the file like any other.
+TEST(PresetLoader, NumberBeyondDoubleRangeIsAJsonErrorNamingTheFile)
+{
+    test::TempDir dir;
+    const auto path = dir.write("huge.json", R"({"format":"rosin-preset/1","beta":1e3080})");
+    try
+    {
+        loadPreset(path);
+        FAIL() << "a number of 1e3080 was accepted";
+    }
+    catch (const ConfigError& e)
+    {
+        EXPECT_EQ(e.file(), path);
+        EXPECT_EQ(e.expected(), "valid JSON");
+        EXPECT_NE(e.got().find("number overflow parsing '1e3080'"), std::string::npos) << e.got();
+    }
+}
+
 TEST(PresetLoader, InlineStringObjects)
 {
     test::TempDir dir;
