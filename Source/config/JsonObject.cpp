@@ -106,9 +106,9 @@ JsonObject JsonObject::object(const std::string& key) const
 
 void JsonObject::allowOnly(std::initializer_list<const char*> known) const
 {
-    for (const auto& [key, unused] : value_.items())
+    for (const auto& item : value_.items())
     {
-        (void)unused;
+        const std::string& key = item.key();
         const bool ok = std::any_of(known.begin(), known.end(), [&](const char* k) { return key == k; });
         if (!ok)
         {

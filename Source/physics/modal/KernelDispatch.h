@@ -7,7 +7,9 @@
 // always-inlined name##Body; ROSIN_KERNEL_DISPATCH(level, name, (args)) calls the one for `level`.
 #include "SimdLevel.h"
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(ROSIN_NO_MULTIVERSION)
+// Clang (the fuzzing build) knows neither arch=x86-64-v4 targets nor those names in __builtin_cpu_supports
+// before version 16: it gets the baseline kernels only.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(ROSIN_NO_MULTIVERSION)
 #define ROSIN_KERNEL_BODY static inline __attribute__((always_inline))
 #define ROSIN_KERNEL_VARIANTS(ret, name, params, args)                                                       \
     __attribute__((target("arch=x86-64-v4"))) static ret name##V4 params noexcept                            \

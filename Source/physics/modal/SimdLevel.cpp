@@ -25,7 +25,9 @@ const char* simdLevelName(SimdLevel level) noexcept
 
 SimdLevel supportedSimdLevel() noexcept
 {
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(ROSIN_NO_MULTIVERSION)
+// Clang (the fuzzing build) knows neither arch=x86-64-v4 targets nor those names in __builtin_cpu_supports
+// before version 16: it gets the baseline kernels only.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(ROSIN_NO_MULTIVERSION)
     __builtin_cpu_init();
     if (__builtin_cpu_supports("x86-64-v4"))
         return SimdLevel::V4;
