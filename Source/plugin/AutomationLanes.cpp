@@ -61,7 +61,14 @@ ParameterInfo infoFor(const std::string& id)
         return {0.0, 1.0, {"cello", "violin"}};
     if (id == ids::string)
         return {0.0, 4.0, {"auto", "I", "II", "III", "IV"}};
-    if (id == ids::body)
+    if (id == ids::output)
+    {
+        std::vector<std::string> names;
+        for (const auto& name : outputChoiceNames())
+            names.push_back(name.toStdString());
+        return {0.0, static_cast<double>(names.size() - 1), names};
+    }
+    if (id == ids::body || id == ids::intonation || id == ids::dcBlocker || id == ids::bypass)
         return {0.0, 1.0, {}, true};
     throw std::invalid_argument(id);
 }

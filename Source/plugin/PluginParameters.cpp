@@ -5,13 +5,13 @@
 namespace rosin::plugin
 {
 
-const std::array<const char*, 13>& allParameterIds()
+const std::array<const char*, 14>& allParameterIds()
 {
-    static const std::array<const char*, 13> list = {
+    static const std::array<const char*, 14> list = {
         ids::bowForce,   ids::bowSpeed, ids::attackAcceleration, ids::beta,
         ids::friction,   ids::body,     ids::ambientTemperature, ids::outputLevel,
         ids::instrument, ids::string,   ids::intonation,         ids::output,
-        ids::dcBlocker};
+        ids::dcBlocker,  ids::bypass};
     return list;
 }
 
@@ -91,6 +91,9 @@ juce::AudioProcessorValueTreeState::ParameterLayout createParameterLayout()
     layout.add(std::make_unique<juce::AudioParameterChoice>(pid(ids::output), "Output", outputChoiceNames(),
                                                             static_cast<int>(OutputChoice::RadiatedSound)));
     layout.add(std::make_unique<juce::AudioParameterBool>(pid(ids::dcBlocker), "DC blocker", true));
+    // The plugin's own bypass (getBypassParameter): hosts show it as theirs, and JUCE's VST3 wrapper then
+    // never parses the private trailer of a saved state (a damaged trailer crashed it, issue 19).
+    layout.add(std::make_unique<juce::AudioParameterBool>(pid(ids::bypass), "Bypass", false));
     return layout;
 }
 

@@ -27,11 +27,12 @@ inline constexpr const char* string = "string";                         ///< cho
 inline constexpr const char* intonation = "intonation";                 ///< bool: the player's ear corrects
 inline constexpr const char* output = "output";                         ///< choice: OutputStage.h
 inline constexpr const char* dcBlocker = "dcBlocker";                   ///< bool: on force and velocity
+inline constexpr const char* bypass = "bypass";                         ///< bool: the host's bypass (silence)
 inline constexpr int version = 1;
 } // namespace ids
 
 /// Every parameter ID, for tests and fuzzers.
-const std::array<const char*, 13>& allParameterIds();
+const std::array<const char*, 14>& allParameterIds();
 
 /// The calibration ambient of the thermal laws: ContactParameters::ambientOffset = T - 20 C.
 inline constexpr double kCalibrationAmbientCelsius = 20.0;

@@ -41,7 +41,7 @@ double schellengConductance(const physics::InstrumentConfig& config, std::size_t
 RosinProcessor::RosinProcessor()
     : juce::AudioProcessor(BusesProperties().withOutput("Output", juce::AudioChannelSet::stereo(), true)),
       state_(*this, nullptr, kStateType, createParameterLayout()), reader_(state_),
-      programs_(loadFactoryPrograms())
+      programs_(loadFactoryPrograms()), bypass_(state_.getRawParameterValue(ids::bypass))
 {
     setCurrentProgram(findProgram(programs_, kDefaultProgram));
     keyboardState_.addListener(&keyboardQueue_);
@@ -314,6 +314,10 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
         if (gesture::decodeMidi(m.data, m.numBytes, numSamples, e))
             controller_.handleEvent(e);
     }
+    const float bypassTarget = bypass_->load() >= 0.5f ? 0.0f : 1.0f;
+    if (bypassTarget != 1.0f || bypassGain_ != 1.0f)
+        buffer.applyGainRamp(0, 0, numSamples, bypassGain_, bypassTarget);
+    bypassGain_ = bypassTarget;
     for (int c = 1; c < buffer.getNumChannels(); ++c)
         buffer.copyFrom(c, 0, buffer, 0, 0, numSamples);
     publishTelemetry(*engine);
@@ -393,6 +397,11 @@ void RosinProcessor::publishTelemetry(const Engine& engine) noexcept
 juce::AudioProcessorEditor* RosinProcessor::createEditor()
 {
     return new RosinEditor(*this);
+}
+
+juce::AudioProcessorParameter* RosinProcessor::getBypassParameter() const
+{
+    return state_.getParameter(ids::bypass);
 }
 
 void RosinProcessor::getStateInformation(juce::MemoryBlock& destData)

@@ -62,6 +62,9 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     const juce::String getProgramName(int index) override;
     void changeProgramName(int, const juce::String&) override {}
 
+    /// The plugin's own "bypass" parameter: silence, faded over one block.
+    juce::AudioProcessorParameter* getBypassParameter() const override;
+
     void getStateInformation(juce::MemoryBlock& destData) override;
     void setStateInformation(const void* data, int sizeInBytes) override;
 
@@ -114,6 +117,8 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     std::array<physics::BowInput, gesture::MidiGestureController::kMaxStrings> inputs_{};
     std::array<physics::VoiceSample, gesture::MidiGestureController::kMaxStrings> outputs_{};
     OutputStage output_;
+    std::atomic<float>* bypass_ = nullptr;
+    float bypassGain_ = 1.0f; ///< the gain the last block ended at (0 bypassed, 1 playing)
     std::atomic<bool> resetRequested_{false};
     // The destructor waits for a timer callback in flight (hosts may destroy us off the message thread).
     std::atomic<bool> closing_{false};
