@@ -143,7 +143,9 @@ void settle(juce::AudioPluginInstance& plugin)
 
 void prepare(juce::AudioPluginInstance& plugin, double sampleRate, int blockSize)
 {
-    plugin.setRateAndBufferSizeDetails(sampleRate, blockSize);
+    // prepareToPlay alone, as hosts and pluginval call it: setting the rate and block size first made JUCE's
+    // VST3 host skip its re-setup when prepared again without a release (its "nothing changed" shortcut),
+    // leaving its buffers at the old block size (a crash in the wrapper's validateLayouts, the host's doing).
     plugin.prepareToPlay(sampleRate, blockSize);
     settle(plugin);
 }

@@ -58,7 +58,13 @@ TEST_P(PluginHost, NoteRendersAtEverySampleRateAndBlockSize)
     auto plugin = createInstance(formatName());
     ASSERT_NE(plugin, nullptr);
     const std::vector<std::pair<const char*, std::vector<int>>> blockings = {
-        {"1", {1}}, {"64", {64}}, {"512", {512}}, {"variable", {1, 17, 512, 3, 64, 250, 2, 511, 128}}};
+        {"1", {1}},
+        {"64", {64}},
+        {"128", {128}},
+        {"256", {256}},
+        {"512", {512}},
+        {"1024", {1024}},
+        {"variable", {1, 17, 512, 3, 64, 250, 2, 511, 128}}}; // pluginval's 5 sizes, and more
     for (double sampleRate : {44100.0, 48000.0, 96000.0})
         for (const auto& [label, sizes] : blockings)
         {
@@ -311,6 +317,27 @@ TEST_P(PluginHost, SurvivesRepeatedPrepareAndRelease)
     const bool rebuild = formatName() != "LV2";
     prepareReleaseCycles(*plugin, formatName(), {48000.0}, rebuild);
     prepareReleaseCycles(*plugin, formatName(), {44100.0, 96000.0, 48000.0, 22050.0, 192000.0}, rebuild);
+}
+
+// pluginval's "non-releasing audio processing": prepared again with other settings while prepared, never
+// released in between; every preparation plays.
+TEST_P(PluginHost, PlaysWhenPreparedAgainWithoutARelease)
+{
+    auto plugin = createInstance(formatName());
+    ASSERT_NE(plugin, nullptr);
+    for (const auto& [sampleRate, blockSize] :
+         std::vector<std::pair<double, int>>{{44100.0, 64}, {48000.0, 512}, {96000.0, 1024}, {48000.0, 128}})
+    {
+        SCOPED_TRACE(formatName() + " at " + juce::String(sampleRate) + " Hz, blocks " +
+                     juce::String(blockSize));
+        prepare(*plugin, sampleRate, blockSize);
+        const auto r = render(*plugin, notePlan(sampleRate, {blockSize}, 0.3, 0.25));
+        EXPECT_EQ(r.nonFinite, 0);
+        EXPECT_LE(r.peak, kOutputBound);
+        EXPECT_GT(r.rmsDuringNote, kSilenceRms) << "silent during the note";
+    }
+    plugin->releaseResources();
+    destroy(plugin);
 }
 
 // Regression test for a crash this host found: JUCE 7.0.5's LV2 host re-instantiates the plugin on every

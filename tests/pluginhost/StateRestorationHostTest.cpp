@@ -67,13 +67,15 @@ class HostStateWrapper
     bool found() const { return original_.getSize() > 0; }
     const juce::MemoryBlock& original() const { return original_; }
 
-    juce::MemoryBlock wrap(const juce::MemoryBlock& pluginState) const
+    /// The host state carrying `pluginState` (VST3: followed by the wrapper's own trailer, unless `raw`).
+    juce::MemoryBlock wrap(const juce::MemoryBlock& pluginState, bool raw = false) const
     {
         juce::MemoryBlock out;
         if (vst3_)
         {
             juce::MemoryBlock stream(pluginState);
-            stream.append(trailer_.getData(), trailer_.getSize());
+            if (!raw)
+                stream.append(trailer_.getData(), trailer_.getSize());
             juce::XmlElement state("VST3PluginState");
             state.createNewChildElement("IComponent")->addTextElement(stream.toBase64Encoding());
             if (auto* controller = xml_->getChildByName("IEditController"))
@@ -226,6 +228,39 @@ TEST_P(PluginHostState, DamagedStatesNeitherCrashHangNorSilence)
     EXPECT_LT(slowest, 2.0) << "a damaged state took " << slowest << " s to restore";
     std::printf("[figure] %s: %d damaged states restored, slowest %.3f s\n", formatName().toRawUTF8(),
                 static_cast<int>(damagedStates(wrapper.original()).size()), slowest);
+    plugin->releaseResources();
+    destroy(plugin);
+}
+
+// The state a damaged project handed JUCE 7.0.5's VST3 wrapper: 23 bytes, a size field of 0x7fffffff and the
+// wrapper's "JUCEPrivateData" mark. The wrapper used to parse that many bytes as its private ValueTree
+// (SIGSEGV); with the plugin's own bypass parameter it no longer reads its private data, and the size it then
+// computes is negative, which the plugin refuses. More sizes of the same kind, and the plugin still plays
+// afterwards.
+TEST(PluginHostVst3, ADamagedWrapperTrailerDoesNotCrash)
+{
+    constexpr double sampleRate = 48000.0;
+    constexpr int blockSize = 256;
+    auto plugin = createInstance("VST3", sampleRate, blockSize);
+    ASSERT_NE(plugin, nullptr);
+    prepare(*plugin, sampleRate, blockSize);
+    juce::MemoryBlock hostState;
+    plugin->getStateInformation(hostState);
+    const HostStateWrapper wrapper("VST3", hostState);
+    ASSERT_TRUE(wrapper.found());
+    for (const juce::uint64 size : {juce::uint64(0x7fffffff), juce::uint64(0xffffffffffffffffull),
+                                    juce::uint64(1) << 40, juce::uint64(24), juce::uint64(0x80000000)})
+    {
+        juce::MemoryBlock trailer;
+        trailer.append(&size, sizeof size);
+        trailer.append("JUCEPrivateData", 15);
+        const juce::MemoryBlock blob = wrapper.wrap(trailer, true);
+        plugin->setStateInformation(blob.getData(), static_cast<int>(blob.getSize()));
+        pumpMessages(10);
+        const Render r = render(*plugin, notePlan(sampleRate, {blockSize}, 0.2, 0.15));
+        EXPECT_EQ(r.nonFinite, 0);
+        EXPECT_GT(r.rmsDuringNote, kSilenceRms) << "silent after a trailer of size " << size;
+    }
     plugin->releaseResources();
     destroy(plugin);
 }
