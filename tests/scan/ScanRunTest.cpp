@@ -13,6 +13,7 @@
 #include "lab/scan/CsvRow.h"
 #include "lab/scan/Merge.h"
 #include "lab/scan/ScanError.h"
+#include "physics/modal/SimdLevel.h"
 
 using namespace rosin::scan;
 namespace fs = std::filesystem;
@@ -238,6 +239,31 @@ TEST(ScanRun, PartialFileOfAnotherSpecificationIsRefused)
         EXPECT_NE(message.find("friction: \"reconstructed\" vs \"classical\""), std::string::npos) << message;
     }
     EXPECT_FALSE(fs::exists(dir + "/scan.csv"));
+}
+
+// Files are byte-identical however the work is split only on one vector path, so the spec records the path
+// (scan.spec.json "kernels") and a partial run of another path is refused like another specification.
+TEST(ScanRun, PartialRunOfAnotherVectorPathIsRefused)
+{
+    rosin::test::TempDir tmp;
+    const std::string dir = tmp.path() + "/path";
+    RunOptions stopping = test::quietOptions(1);
+    stopping.shouldStop = [] { return true; };
+    test::run(test::smallSpec(), dir, stopping);
+    std::string spec = file(dir, "scan.spec.json");
+    const std::string ours = std::string("\"kernels\": \"") + rosin::physics::simdLevelName(rosin::physics::simdLevel()) + "\"";
+    ASSERT_NE(spec.find(ours), std::string::npos) << spec;
+    spec.replace(spec.find(ours), ours.size(), "\"kernels\": \"another-path\"");
+    writeFileAtomically(dir + "/scan.spec.json", spec);
+    try
+    {
+        test::run(test::smallSpec(), dir, test::quietOptions(1));
+        FAIL() << "a partial file of another vector path was resumed";
+    }
+    catch (const ScanError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("kernels: \""), std::string::npos) << e.what();
+    }
 }
 
 TEST(ScanRun, ShardsMergedEqualASingleRun)

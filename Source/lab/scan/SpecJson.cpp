@@ -2,6 +2,7 @@
 
 #include "Variations.h"
 #include "config/ConfigError.h"
+#include "physics/modal/SimdLevel.h"
 
 namespace rosin::scan
 {
@@ -188,6 +189,9 @@ json specToJson(const ScanSpec& s)
     // Only when not the default, so that specs written before the option read back byte-identical.
     if (s.classification != Classification::State)
         j["classification"] = classificationName(s.classification);
+    // The vector path of the process (ROSIN_SIMD): files are byte-identical however the work is split only on
+    // one path, so a resume or a merge on another path is refused as another specification would be.
+    j["kernels"] = physics::simdLevelName(physics::simdLevel());
     return j;
 }
 
