@@ -21,8 +21,15 @@ std::string describeJson(const nlohmann::json& value)
     {
         std::string text = value.get<std::string>();
         if (text.size() > 60)
-            text = text.substr(0, 57) + "...";
-        return nlohmann::json(text).dump();
+        {
+            // Cut at a character boundary: a cut inside a UTF-8 sequence made dump() throw (found by
+            // fuzzing).
+            std::size_t cut = 57;
+            while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80)
+                --cut;
+            text = text.substr(0, cut) + "...";
+        }
+        return nlohmann::json(text).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     }
     default:
         return value.is_number() ? gesture::formatNumber(value.get<double>()) : value.dump();

@@ -142,6 +142,28 @@ TEST(PresetLoader, NumberBeyondDoubleRangeIsAJsonErrorNamingTheFile)
     }
 }
 
+// Found by fuzzing: the message quoting a long bad value cut it inside a UTF-8 character, and writing the
+// message threw instead of naming the field.
+TEST(PresetLoader, LongNonAsciiValueIsQuotedInTheMessage)
+{
+    test::TempDir dir;
+    std::string value;
+    for (int i = 0; i < 40; ++i)
+        value += "\xc3\xa9"; // e acute, two bytes
+    const auto path =
+        dir.write("accent.json", R"({"format":"rosin-preset/1","friction":")" + value + R"("})");
+    try
+    {
+        loadPreset(path);
+        FAIL() << "an unknown friction law was accepted";
+    }
+    catch (const ConfigError& e)
+    {
+        EXPECT_EQ(e.field(), "friction");
+        EXPECT_NE(e.got().find("..."), std::string::npos) << e.got();
+    }
+}
+
 TEST(PresetLoader, InlineStringObjects)
 {
     test::TempDir dir;
