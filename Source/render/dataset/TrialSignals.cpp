@@ -62,16 +62,21 @@ std::unique_ptr<juce::AudioFormatReader> openWav(const std::string& name, const 
     return reader;
 }
 
+void checkChannelCount(const std::string& name, std::size_t channels, const Dataset& dataset)
+{
+    if (channels != dataset.channels.size())
+        throw DatasetError(name, "",
+                           std::to_string(dataset.channels.size()) + " channels (" +
+                               channelList(dataset.channels) + ", as dataset.json lists them)",
+                           std::to_string(channels) + " channels");
+}
+
 void checkLayout(const std::string& name, const juce::AudioFormatReader& reader, const Dataset& dataset)
 {
     if (!reader.usesFloatingPointData || reader.bitsPerSample != 32)
         throw DatasetError(name, "", "IEEE float 32-bit samples (format rosin-measurements/1)",
                            describeSampleFormat(reader));
-    if (reader.numChannels != dataset.channels.size())
-        throw DatasetError(name, "",
-                           std::to_string(dataset.channels.size()) + " channels (" +
-                               channelList(dataset.channels) + ", as dataset.json lists them)",
-                           std::to_string(reader.numChannels) + " channels");
+    checkChannelCount(name, reader.numChannels, dataset);
     if (reader.sampleRate != dataset.sampleRate)
         throw DatasetError(name, "",
                            "a sample rate of " + std::to_string(dataset.sampleRate) +
@@ -119,6 +124,8 @@ TrialSignals readTrialSignals(const Dataset& dataset, const Trial& trial)
     if (!chunk)
         throw DatasetError(name, "", "a WAV file (RIFF/WAVE with a data chunk)",
                            "a file without one (another format, or cut short in its header)");
+    for (const unsigned channels : chunk->formatChannels) // before JUCE reads the header (WavDataChunk.h)
+        checkChannelCount(name, channels, dataset);
     const auto reader = openWav(name, path);
     checkLayout(name, *reader, dataset);
     checkComplete(name, *chunk, *reader);

@@ -35,6 +35,7 @@ std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
 
     std::uint64_t position = 12, rf64DataBytes = 0;
     std::array<unsigned char, 16> header{};
+    std::vector<unsigned> formatChannels;
     while (position + 8 <= size)
     {
         in.seekg(static_cast<std::streamoff>(position));
@@ -48,8 +49,13 @@ std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
             chunk.offset = body;
             chunk.declaredBytes = rf64 && length == 0xffffffffu ? rf64DataBytes : length;
             chunk.presentBytes = std::min(chunk.declaredBytes, size - body);
+            chunk.formatChannels = std::move(formatChannels);
             return chunk;
         }
+        // fmt: format tag (2 bytes), then the channel count (2 bytes).
+        if (std::memcmp(header.data(), "fmt ", 4) == 0 && length >= 4 &&
+            in.read(reinterpret_cast<char*>(header.data()), 4))
+            formatChannels.push_back(static_cast<unsigned>(littleEndian(header.data() + 2, 2)));
         // ds64: riffSize (8 bytes), then dataSize (8 bytes), which replaces the data chunk's 32-bit size.
         if (rf64 && std::memcmp(header.data(), "ds64", 4) == 0 && length >= 16 &&
             in.read(reinterpret_cast<char*>(header.data()), 16))

@@ -141,6 +141,23 @@ TEST_F(TrialSignalsTest, ChannelCountMismatchIsRejected)
                                          "lists them) but got 3 channels");
 }
 
+// Found by fuzzing: JUCE 7.0.5 casts channel indices past 128 to its channel enum (undefined behaviour), so
+// a header claiming hundreds of channels is refused from the header's own fmt chunk before JUCE reads it.
+TEST_F(TrialSignalsTest, HeaderClaimingHundredsOfChannelsIsRefusedBeforeJuceReadsIt)
+{
+    auto u16 = [](unsigned v) { return std::string{static_cast<char>(v & 0xff), static_cast<char>(v >> 8)}; };
+    auto u32 = [&](unsigned v) { return u16(v & 0xffff) + u16(v >> 16); };
+    const unsigned channels = 300;
+    const std::string fmt =
+        u16(3) + u16(channels) + u32(44100) + u32(44100 * 4 * channels) + u16(4 * channels) + u16(32);
+    const std::string body = "WAVEfmt " + u32(16) + fmt + "data" + u32(8) + std::string(8, '\0');
+    fs::create_directories(wavPath().parent_path());
+    std::ofstream(wavPath(), std::ios::binary) << "RIFF" << u32(static_cast<unsigned>(body.size())) << body;
+    const DatasetError e = readError();
+    EXPECT_EQ(e.file(), wavPath().string());
+    EXPECT_EQ(e.got(), "300 channels") << e.what();
+}
+
 TEST_F(TrialSignalsTest, SampleRateMismatchIsRejected)
 {
     writeRawWav(wavPath(), 48000, {{0.1f}, {0.2f}}, 32);
