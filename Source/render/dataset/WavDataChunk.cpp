@@ -36,21 +36,21 @@ std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
     std::uint64_t position = 12, rf64DataBytes = 0;
     std::array<unsigned char, 16> header{};
     std::vector<unsigned> formatChannels;
+    std::optional<WavDataChunk> data;
+    // Every chunk, also after the data: JUCE's reader reads them all (an "fmt " chunk after the data counts).
     while (position + 8 <= size)
     {
         in.seekg(static_cast<std::streamoff>(position));
         if (!in.read(reinterpret_cast<char*>(header.data()), 8))
-            return std::nullopt;
+            break;
         const std::uint64_t length = littleEndian(header.data() + 4, 4);
         const std::uint64_t body = position + 8;
-        if (std::memcmp(header.data(), "data", 4) == 0)
+        if (!data && std::memcmp(header.data(), "data", 4) == 0)
         {
-            WavDataChunk chunk;
-            chunk.offset = body;
-            chunk.declaredBytes = rf64 && length == 0xffffffffu ? rf64DataBytes : length;
-            chunk.presentBytes = std::min(chunk.declaredBytes, size - body);
-            chunk.formatChannels = std::move(formatChannels);
-            return chunk;
+            data.emplace();
+            data->offset = body;
+            data->declaredBytes = rf64 && length == 0xffffffffu ? rf64DataBytes : length;
+            data->presentBytes = std::min(data->declaredBytes, size - body);
         }
         // fmt: format tag (2 bytes), then the channel count (2 bytes).
         if (std::memcmp(header.data(), "fmt ", 4) == 0 && length >= 4 &&
@@ -62,7 +62,9 @@ std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
             rf64DataBytes = littleEndian(header.data() + 8, 8);
         position = body + length + (length & 1); // chunks are padded to even sizes
     }
-    return std::nullopt;
+    if (data)
+        data->formatChannels = std::move(formatChannels);
+    return data;
 }
 
 } // namespace rosin::discovery
