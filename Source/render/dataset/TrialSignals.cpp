@@ -124,6 +124,10 @@ TrialSignals readTrialSignals(const Dataset& dataset, const Trial& trial)
     if (!chunk)
         throw DatasetError(name, "", "a WAV file (RIFF/WAVE with a data chunk)",
                            "a file without one (another format, or cut short in its header)");
+    if (!chunk->overlongChunk.empty()) // before JUCE reads the header (WavDataChunk.h)
+        throw DatasetError(name, "", "a WAV file whose chunks fit inside it",
+                           "a chunk " + chunk->overlongChunk + " in a file of " +
+                               std::to_string(std::filesystem::file_size(path)) + " bytes");
     for (const unsigned channels : chunk->formatChannels) // before JUCE reads the header (WavDataChunk.h)
         checkChannelCount(name, channels, dataset);
     const auto reader = openWav(name, path);

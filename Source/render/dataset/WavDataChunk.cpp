@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 
@@ -37,6 +38,7 @@ std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
     std::array<unsigned char, 16> header{};
     std::vector<unsigned> formatChannels;
     std::optional<WavDataChunk> data;
+    std::string overlong;
     // Every chunk, also after the data: JUCE's reader reads them all (an "fmt " chunk after the data counts).
     while (position + 8 <= size)
     {
@@ -52,6 +54,14 @@ std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
             data->declaredBytes = rf64 && length == 0xffffffffu ? rf64DataBytes : length;
             data->presentBytes = std::min(data->declaredBytes, size - body);
         }
+        const bool isData = std::memcmp(header.data(), "data", 4) == 0;
+        if (!isData && body + length > size && overlong.empty())
+        {
+            char text[64];
+            std::snprintf(text, sizeof text, "'%.4s' of %llu bytes", reinterpret_cast<const char*>(header.data()),
+                          static_cast<unsigned long long>(length));
+            overlong = text;
+        }
         // fmt: format tag (2 bytes), then the channel count (2 bytes).
         if (std::memcmp(header.data(), "fmt ", 4) == 0 && length >= 4 &&
             in.read(reinterpret_cast<char*>(header.data()), 4))
@@ -63,7 +73,10 @@ std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
         position = body + length + (length & 1); // chunks are padded to even sizes
     }
     if (data)
+    {
         data->formatChannels = std::move(formatChannels);
+        data->overlongChunk = overlong;
+    }
     return data;
 }
 

@@ -20,6 +20,10 @@ struct WavDataChunk
     /// header: JUCE 7.0.5 casts channel indices past 128 to its channel enum (undefined behaviour, found by
     /// fuzzing), so a header claiming hundreds of channels never reaches it.
     std::vector<unsigned> formatChannels;
+    /// A chunk other than the data that claims more bytes than the file holds ("'cue ' of 1073742462 bytes"),
+    /// or empty. JUCE's reader allocates such a chunk's claimed size before reading it (a 2 GB allocation
+    /// from a 756-byte file, found by fuzzing), so such a file never reaches it.
+    std::string overlongChunk;
 };
 
 /// Walks the RIFF (or RF64) chunks to the "data" chunk. std::nullopt when the file is not RIFF/WAVE or has

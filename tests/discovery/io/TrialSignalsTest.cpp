@@ -21,6 +21,12 @@ namespace
 namespace fs = std::filesystem;
 
 // A WAV written by JUCE directly, so the tests can make the files the library refuses to write.
+std::string slurpFile(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
 void writeRawWav(const fs::path& path, double sampleRate, const std::vector<std::vector<float>>& channels,
                  int bits)
 {
@@ -165,6 +171,24 @@ TEST_F(TrialSignalsTest, HeaderClaimingHundredsOfChannelsIsRefusedBeforeJuceRead
         EXPECT_EQ(e.file(), wavPath().string());
         EXPECT_TRUE(e.got() == "300 channels" || e.got() == "253 channels") << e.what();
     }
+}
+
+// Found by fuzzing: JUCE's WAV reader allocates the size a metadata chunk claims before reading it, so a
+// 756-byte file with a "cue " chunk claiming a gigabyte ran out of memory. Such a file is refused first.
+TEST_F(TrialSignalsTest, ChunkClaimingMoreThanTheFileHoldsIsRefusedBeforeJuceReadsIt)
+{
+    writeTrialSignals(dataset, trial(), signals(10));
+    std::string bytes = slurpFile(wavPath());
+    const unsigned claimed = 0x40000000u;
+    std::string cue = "cue ";
+    for (int k = 0; k < 4; ++k)
+        cue += static_cast<char>((claimed >> (8 * k)) & 0xff);
+    bytes += cue + std::string(16, '\0');
+    std::ofstream(wavPath(), std::ios::binary | std::ios::trunc) << bytes;
+    const DatasetError e = readError();
+    EXPECT_EQ(e.file(), wavPath().string());
+    EXPECT_EQ(e.expected(), "a WAV file whose chunks fit inside it");
+    EXPECT_NE(e.got().find("'cue ' of 1073741824 bytes"), std::string::npos) << e.what();
 }
 
 TEST_F(TrialSignalsTest, SampleRateMismatchIsRejected)
