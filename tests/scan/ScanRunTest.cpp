@@ -195,7 +195,8 @@ TEST(ScanRun, DamagedFinishedScanIsNamedAndItsBadRowsComputedAgain)
     damaged += replaceField(lines[2], 1, "0.2") + "\n"; // cell 1: beta edited (line 3)
     damaged += replaceField(lines[3], 6, "abc") + "\n"; // cell 2: muStatic not a number (line 4)
     damaged += lines[4] + "\n" + replaceField(lines[4], 10, "1234") + "\n"; // cell 3 twice (lines 5, 6)
-    for (std::size_t i = 5; i < 20; ++i)                                    // cells 4..18 kept
+    damaged += lines[4] + "\n";          // and its first version again (line 7): still contradicted
+    for (std::size_t i = 5; i < 20; ++i) // cells 4..18 kept
         damaged += lines[i] + "\n";
     damaged += lines[20].substr(0, 9); // cut off in cell 19; 20..23 missing
     writeFileAtomically(dir + "/scan.csv", damaged);
@@ -210,7 +211,8 @@ TEST(ScanRun, DamagedFinishedScanIsNamedAndItsBadRowsComputedAgain)
          {"scan.csv: line 3: cell 1 has other coordinates than the grid's",
           "scan.csv: line 4: field muStatic: expected a number but got \"abc\"",
           "scan.csv: line 6: cell 3 appears twice with different results (also line 5)",
-          "scan.csv: line 22: cut off (no newline at the end of the file)"})
+          "scan.csv: line 7: cell 3 appears twice with different results (also line 5)",
+          "scan.csv: line 23: cut off (no newline at the end of the file)"})
         EXPECT_NE(warnings.find(expected), std::string::npos) << expected << "\n" << warnings;
     EXPECT_NE(warnings.find("; the cell is computed again"), std::string::npos) << warnings;
 }
@@ -251,7 +253,8 @@ TEST(ScanRun, PartialRunOfAnotherVectorPathIsRefused)
     stopping.shouldStop = [] { return true; };
     test::run(test::smallSpec(), dir, stopping);
     std::string spec = file(dir, "scan.spec.json");
-    const std::string ours = std::string("\"kernels\": \"") + rosin::physics::simdLevelName(rosin::physics::simdLevel()) + "\"";
+    const std::string ours =
+        std::string("\"kernels\": \"") + rosin::physics::simdLevelName(rosin::physics::simdLevel()) + "\"";
     ASSERT_NE(spec.find(ours), std::string::npos) << spec;
     spec.replace(spec.find(ours), ours.size(), "\"kernels\": \"another-path\"");
     writeFileAtomically(dir + "/scan.spec.json", spec);

@@ -125,16 +125,22 @@ RowMap walkRows(const fs::path& file, const ScanSpec& spec, bool tolerateTornLin
             bad(lineNumber, problem);
             continue;
         }
-        const auto [at, inserted] = rows.emplace(row.cell, line);
-        if (inserted)
-            firstLine[row.cell] = lineNumber;
-        else if (at->second != line)
+        // A cell once contradicted stays out, whatever later lines of it say.
+        if (const auto seen = firstLine.find(row.cell); seen != firstLine.end())
         {
-            bad(lineNumber, "cell " + std::to_string(row.cell) +
-                                " appears twice with different results (also line " +
-                                std::to_string(firstLine[row.cell]) + ")");
-            rows.erase(at);
+            const auto kept = rows.find(row.cell);
+            if (kept == rows.end() || kept->second != line)
+            {
+                bad(lineNumber, "cell " + std::to_string(row.cell) +
+                                    " appears twice with different results (also line " +
+                                    std::to_string(seen->second) + ")");
+                if (kept != rows.end())
+                    rows.erase(kept);
+            }
+            continue;
         }
+        firstLine[row.cell] = lineNumber;
+        rows.emplace(row.cell, line);
     }
     if (lineNumber == 0 && !tolerateTornLine)
         bad(0, "empty (expected the header \"" + csvHeader(spec.kind) + "\")");
