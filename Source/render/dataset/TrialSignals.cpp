@@ -9,6 +9,7 @@
 #include <juce_audio_formats/juce_audio_formats.h>
 
 #include "WavDataChunk.h"
+#include "WavEssentialsStream.h"
 #include "discovery/TrialPath.h"
 #include "gesture/GestureLimits.h"
 
@@ -48,13 +49,12 @@ juce::File juceFile(const fs::path& path)
     return juce::File(juce::String(fs::absolute(path).string()));
 }
 
-std::unique_ptr<juce::AudioFormatReader> openWav(const std::string& name, const fs::path& path)
+std::unique_ptr<juce::AudioFormatReader> openWav(const std::string& name, const fs::path& path,
+                                                 const WavDataChunk& chunk)
 {
-    auto stream = std::make_unique<juce::FileInputStream>(juceFile(path));
-    if (!stream->openedOk())
-        throw DatasetError(name, "", "a readable file",
-                           "a file that cannot be opened (" +
-                               stream->getStatus().getErrorMessage().toStdString() + ")");
+    auto stream = openWavEssentials(juceFile(path), chunk); // no metadata chunk reaches JUCE
+    if (stream == nullptr)
+        throw DatasetError(name, "", "a readable file", "a file that cannot be opened");
     juce::WavAudioFormat wav;
     std::unique_ptr<juce::AudioFormatReader> reader(wav.createReaderFor(stream.release(), true));
     if (reader == nullptr)
@@ -130,7 +130,7 @@ TrialSignals readTrialSignals(const Dataset& dataset, const Trial& trial)
                                std::to_string(std::filesystem::file_size(path)) + " bytes");
     for (const unsigned channels : chunk->formatChannels) // before JUCE reads the header (WavDataChunk.h)
         checkChannelCount(name, channels, dataset);
-    const auto reader = openWav(name, path);
+    const auto reader = openWav(name, path, *chunk);
     checkLayout(name, *reader, dataset);
     checkComplete(name, *chunk, *reader);
 

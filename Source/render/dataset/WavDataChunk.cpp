@@ -39,6 +39,7 @@ std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
     std::vector<unsigned> formatChannels;
     std::optional<WavDataChunk> data;
     std::string overlong;
+    std::uint64_t formatOffset = 0, formatBytes = 0, ds64Offset = 0, ds64Bytes = 0;
     // Every chunk, also after the data: JUCE's reader reads them all (an "fmt " chunk after the data counts).
     while (position + 8 <= size)
     {
@@ -58,17 +59,22 @@ std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
         if (!isData && body + length > size && overlong.empty())
         {
             char text[64];
-            std::snprintf(text, sizeof text, "'%.4s' of %llu bytes", reinterpret_cast<const char*>(header.data()),
+            std::snprintf(text, sizeof text, "'%.4s' of %llu bytes",
+                          reinterpret_cast<const char*>(header.data()),
                           static_cast<unsigned long long>(length));
             overlong = text;
         }
+        const bool isFormat = std::memcmp(header.data(), "fmt ", 4) == 0;
+        const bool isDs64 = rf64 && std::memcmp(header.data(), "ds64", 4) == 0;
+        if (isFormat && formatBytes == 0 && body + length <= size)
+            formatOffset = position, formatBytes = 8 + length;
+        if (isDs64 && ds64Bytes == 0 && body + length <= size)
+            ds64Offset = position, ds64Bytes = 8 + length;
         // fmt: format tag (2 bytes), then the channel count (2 bytes).
-        if (std::memcmp(header.data(), "fmt ", 4) == 0 && length >= 4 &&
-            in.read(reinterpret_cast<char*>(header.data()), 4))
+        if (isFormat && length >= 4 && in.read(reinterpret_cast<char*>(header.data()), 4))
             formatChannels.push_back(static_cast<unsigned>(littleEndian(header.data() + 2, 2)));
         // ds64: riffSize (8 bytes), then dataSize (8 bytes), which replaces the data chunk's 32-bit size.
-        if (rf64 && std::memcmp(header.data(), "ds64", 4) == 0 && length >= 16 &&
-            in.read(reinterpret_cast<char*>(header.data()), 16))
+        if (isDs64 && length >= 16 && in.read(reinterpret_cast<char*>(header.data()), 16))
             rf64DataBytes = littleEndian(header.data() + 8, 8);
         position = body + length + (length & 1); // chunks are padded to even sizes
     }
@@ -76,6 +82,9 @@ std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
     {
         data->formatChannels = std::move(formatChannels);
         data->overlongChunk = overlong;
+        data->rf64 = rf64;
+        data->formatChunkOffset = formatOffset, data->formatChunkBytes = formatBytes;
+        data->ds64ChunkOffset = ds64Offset, data->ds64ChunkBytes = ds64Bytes;
     }
     return data;
 }

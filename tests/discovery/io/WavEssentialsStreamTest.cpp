@@ -1,0 +1,131 @@
+// Trial files carry metadata chunks JUCE should never parse (fuzzing found its XML parser reading past a
+// damaged iXML chunk): what reaches JUCE is exactly the header, the format and the data, and the samples
+// still come back bit for bit, from RIFF and from RF64 files, with the metadata before or after the data.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+#include "render/dataset/TrialSignals.h"
+#include "render/dataset/WavEssentialsStream.h"
+
+namespace rosin::discovery
+{
+namespace
+{
+
+namespace fs = std::filesystem;
+
+std::string u16(unsigned v)
+{
+    return {static_cast<char>(v & 0xff), static_cast<char>((v >> 8) & 0xff)};
+}
+std::string u32(unsigned v)
+{
+    return u16(v & 0xffff) + u16(v >> 16);
+}
+std::string u64(unsigned long long v)
+{
+    return u32(static_cast<unsigned>(v)) + u32(static_cast<unsigned>(v >> 32));
+}
+
+std::string chunk(const std::string& id, const std::string& body)
+{
+    return id + u32(static_cast<unsigned>(body.size())) + body +
+           (body.size() % 2 ? std::string(1, '\0') : "");
+}
+
+const std::string kFormat = chunk("fmt ", u16(3) + u16(2) + u32(44100) + u32(44100 * 8) + u16(8) + u16(32));
+const std::vector<float> kFrames = {0.25f, -1.5f, 1e-30f, 3.0f, -0.125f, 7.5f}; // 3 frames, 2 channels
+
+std::string sampleBytes()
+{
+    std::string bytes(kFrames.size() * 4, '\0');
+    std::memcpy(bytes.data(), kFrames.data(), bytes.size()); // little-endian, as the test machines are
+    return bytes;
+}
+
+std::string riff(const std::string& chunks)
+{
+    return "RIFF" + u32(static_cast<unsigned>(4 + chunks.size())) + "WAVE" + chunks;
+}
+
+// What a damaged file's iXML chunk looked like: an XML element cut off with no closing bracket.
+const std::string kDamagedIxml = chunk("iXML", "<q>\x13\x8e\xff\xff\xffNSt6lo\xdf\xff\xff");
+const std::string kList = chunk("LIST", "INFOISFT" + u32(5) + "rosin" + std::string(1, '\0'));
+
+class WavEssentialsStreamTest : public ::testing::Test
+{
+  protected:
+    WavEssentialsStreamTest()
+    {
+        dataset.folder = folder.string();
+        dataset.sampleRate = 44100;
+        dataset.channels = {{"bridgeForce", "N"}, {"bowVelocity", "m/s"}};
+        trial.id = "t";
+        trial.file = "t.wav";
+        fs::create_directories(folder);
+    }
+    ~WavEssentialsStreamTest() override { fs::remove_all(folder); }
+
+    void write(const std::string& bytes) const { std::ofstream(path(), std::ios::binary) << bytes; }
+    fs::path path() const { return folder / trial.file; }
+
+    std::string essentials() const
+    {
+        const auto found = findWavDataChunk(path());
+        EXPECT_TRUE(found.has_value());
+        auto stream = openWavEssentials(juce::File(juce::String(path().string())), *found);
+        EXPECT_NE(stream, nullptr);
+        juce::MemoryBlock block;
+        stream->readIntoMemoryBlock(block);
+        return std::string(static_cast<const char*>(block.getData()), block.getSize());
+    }
+
+    void expectSamplesBack() const
+    {
+        const TrialSignals back = readTrialSignals(dataset, trial);
+        ASSERT_EQ(back.frames(), 3u);
+        for (std::size_t n = 0; n < 3; ++n)
+            for (std::size_t c = 0; c < 2; ++c)
+                EXPECT_EQ(back.samples[c][n], kFrames[2 * n + c]) << "frame " << n << " channel " << c;
+    }
+
+    fs::path folder = fs::temp_directory_path() / ("rosin-wav-essentials-" + std::to_string(::getpid()));
+    Dataset dataset;
+    Trial trial;
+};
+
+TEST_F(WavEssentialsStreamTest, MetadataChunksNeverReachTheReader)
+{
+    const std::string data = chunk("data", sampleBytes());
+    write(riff(kList + kDamagedIxml + kFormat + chunk("bext", std::string(7, 'b')) + data + kDamagedIxml));
+    EXPECT_EQ(essentials(), riff(kFormat + data));
+    expectSamplesBack();
+}
+
+TEST_F(WavEssentialsStreamTest, TheFirstFormatChunkIsTheOneKept)
+{
+    const std::string data = chunk("data", sampleBytes());
+    write(riff(kFormat + data + kFormat));
+    EXPECT_EQ(essentials(), riff(kFormat + data));
+}
+
+// RF64 keeps the data size in its ds64 chunk; the data chunk's own size reads 0xffffffff.
+TEST_F(WavEssentialsStreamTest, Rf64KeepsItsDs64Chunk)
+{
+    const std::string samples = sampleBytes();
+    const std::string rest = kDamagedIxml + kFormat + "data" + u32(0xffffffffu) + samples;
+    const std::size_t riffBytes = 4 + 8 + 28 + rest.size(); // "WAVE", the ds64 chunk, the rest
+    const std::string ds64 = chunk("ds64", u64(riffBytes) + u64(samples.size()) + u64(3) + u32(0));
+    const std::string data = "data" + u32(0xffffffffu) + samples;
+    const std::string body = "WAVE" + ds64 + rest;
+    write("RF64" + u32(0xffffffffu) + body);
+    EXPECT_EQ(essentials(), "RF64" + u32(0xffffffffu) + "WAVE" + ds64 + kFormat + data);
+    expectSamplesBack();
+}
+
+} // namespace
+} // namespace rosin::discovery
