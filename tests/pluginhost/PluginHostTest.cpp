@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "HostHarness.h"
+#include "XlibHostSetup.h"
 
 using namespace rosin::pluginhost;
 
@@ -400,6 +401,7 @@ INSTANTIATE_TEST_SUITE_P(Formats, PluginHost, ::testing::Values("VST3", "LV2"),
 
 int main(int argc, char** argv)
 {
+    prepareXlibAsADesktopHostDoes();
     juce::ScopedJuceInitialiser_GUI juce;
     ::testing::InitGoogleTest(&argc, argv);
     const int result = RUN_ALL_TESTS();
