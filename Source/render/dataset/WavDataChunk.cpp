@@ -52,7 +52,9 @@ std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
         {
             data.emplace();
             data->offset = body;
-            data->declaredBytes = rf64 && length == 0xffffffffu ? rf64DataBytes : length;
+            // As JUCE's reader decides: in RF64 a nonzero ds64 data size wins over the chunk's own, whatever
+            // that says (a mismatch made JUCE read the samples as further chunks, found by fuzzing).
+            data->declaredBytes = rf64 && rf64DataBytes > 0 ? rf64DataBytes : length;
             data->presentBytes = std::min(data->declaredBytes, size - body);
         }
         const bool isData = std::memcmp(header.data(), "data", 4) == 0;

@@ -14,7 +14,7 @@ namespace rosin::discovery
 struct WavDataChunk
 {
     std::uint64_t offset = 0;        ///< of the first sample byte
-    std::uint64_t declaredBytes = 0; ///< as the header says (RF64: from the ds64 chunk)
+    std::uint64_t declaredBytes = 0; ///< as the header says (RF64: the ds64 chunk's size if nonzero)
     std::uint64_t presentBytes = 0;  ///< what the file actually holds from `offset`, at most declaredBytes
     /// The channel count of every "fmt " chunk in the file (normally one). Checked before JUCE reads the
     /// header: JUCE 7.0.5 casts channel indices past 128 to its channel enum (undefined behaviour, found by

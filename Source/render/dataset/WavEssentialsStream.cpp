@@ -63,6 +63,16 @@ bool copyRange(juce::FileInputStream& in, juce::uint64 offset, juce::uint64 byte
     return in.setPosition(static_cast<juce::int64>(offset)) &&
            out.writeFromInputStream(in, static_cast<juce::int64>(bytes)) == static_cast<juce::int64>(bytes);
 }
+// A whole chunk, header included, and the pad byte that keeps the next one at an even offset (whatever the
+// file held there: readers skip it).
+bool copyChunk(juce::FileInputStream& in, juce::uint64 offset, juce::uint64 bytes,
+               juce::MemoryOutputStream& out)
+{
+    const bool ok = copyRange(in, offset, bytes, out);
+    if (bytes & 1)
+        out.writeByte(0);
+    return ok;
+}
 } // namespace
 
 std::unique_ptr<juce::InputStream> openWavEssentials(const juce::File& file, const WavDataChunk& chunk)
@@ -70,20 +80,20 @@ std::unique_ptr<juce::InputStream> openWavEssentials(const juce::File& file, con
     juce::FileInputStream in(file);
     if (!in.openedOk())
         return nullptr;
-    juce::MemoryOutputStream head;
-    head.write(chunk.rf64 ? "RF64" : "RIFF", 4);
-    const juce::uint64 bodyBytes = 4 + chunk.ds64ChunkBytes + chunk.formatChunkBytes +
-                                   (chunk.formatChunkBytes & 1) + 8 + chunk.presentBytes;
-    // RF64 keeps its sizes in ds64; a RIFF size cannot say more than 32 bits hold.
-    head.writeInt(chunk.rf64 ? -1 : static_cast<int>(std::min<juce::uint64>(bodyBytes, 0xffffffffu)));
-    head.write("WAVE", 4);
-    bool ok = !chunk.rf64 || copyRange(in, chunk.ds64ChunkOffset, chunk.ds64ChunkBytes, head);
-    ok = ok && copyRange(in, chunk.formatChunkOffset, chunk.formatChunkBytes, head);
-    if (chunk.formatChunkBytes & 1)
-        head.writeByte(0);
-    ok = ok && copyRange(in, chunk.offset - 8, 8, head); // the data chunk's own header, its length unchanged
+    juce::MemoryOutputStream chunks; // after "WAVE", up to the first sample byte
+    bool ok = !chunk.rf64 || copyChunk(in, chunk.ds64ChunkOffset, chunk.ds64ChunkBytes, chunks);
+    ok = ok && copyChunk(in, chunk.formatChunkOffset, chunk.formatChunkBytes, chunks);
+    ok =
+        ok && copyRange(in, chunk.offset - 8, 8, chunks); // the data chunk's own header, its length unchanged
     if (!ok)
         return nullptr;
+    juce::MemoryOutputStream head;
+    head.write(chunk.rf64 ? "RF64" : "RIFF", 4);
+    // RF64 keeps its sizes in ds64; a RIFF size cannot say more than 32 bits hold.
+    const juce::uint64 riffBytes = 4 + chunks.getDataSize() + chunk.presentBytes;
+    head.writeInt(chunk.rf64 ? -1 : static_cast<int>(std::min<juce::uint64>(riffBytes, 0xffffffffu)));
+    head.write("WAVE", 4);
+    head << chunks.getMemoryBlock();
     auto data = std::make_unique<juce::FileInputStream>(file);
     if (!data->openedOk())
         return nullptr;

@@ -127,5 +127,37 @@ TEST_F(WavEssentialsStreamTest, Rf64KeepsItsDs64Chunk)
     expectSamplesBack();
 }
 
+// Found by fuzzing: an RF64 file whose ds64 data size is smaller than its data chunk's own size. JUCE's
+// reader takes the ds64 size and read the rest of the samples as further chunks (one claimed 2 GB); the data
+// handed to it now ends where the ds64 size says.
+TEST_F(WavEssentialsStreamTest, Rf64DataEndsWhereDs64Says)
+{
+    const std::string samples = sampleBytes();
+    const std::string trailing = "smpl" + u32(0x80000000u) + std::string(32, '\x8b');
+    const std::string rest = kFormat + "data" + u32(0x2a00) + samples + trailing;
+    const std::size_t riffBytes = 4 + 8 + 28 + rest.size();
+    const std::string ds64 = chunk("ds64", u64(riffBytes) + u64(samples.size()) + u64(3) + u32(0));
+    write("RF64" + u32(0xffffffffu) + "WAVE" + ds64 + rest);
+    EXPECT_EQ(essentials(),
+              "RF64" + u32(0xffffffffu) + "WAVE" + ds64 + kFormat + "data" + u32(0x2a00) + samples);
+    expectSamplesBack();
+}
+
+// Found by fuzzing: a ds64 chunk of odd length lost its pad byte on the way, and JUCE read the next chunk one
+// byte off. Odd-length ds64 and fmt chunks keep their pad.
+TEST_F(WavEssentialsStreamTest, OddLengthChunksKeepTheirPadByte)
+{
+    const std::string samples = sampleBytes();
+    const std::string oddFormat =
+        chunk("fmt ", u16(3) + u16(2) + u32(44100) + u32(44100 * 8) + u16(8) + u16(32) + std::string(1, 'x'));
+    const std::string rest = oddFormat + "data" + u32(0xffffffffu) + samples;
+    const std::size_t riffBytes = 4 + 8 + 30 + rest.size();
+    const std::string ds64 = chunk("ds64", u64(riffBytes) + u64(samples.size()) + u64(3) + u32(0) + "y");
+    ASSERT_EQ(ds64.size(), 8u + 30u); // 29 bytes and the pad
+    write("RF64" + u32(0xffffffffu) + "WAVE" + ds64 + rest);
+    EXPECT_EQ(essentials(), "RF64" + u32(0xffffffffu) + "WAVE" + ds64 + rest);
+    expectSamplesBack();
+}
+
 } // namespace
 } // namespace rosin::discovery
