@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "InstalledData.h"
 #include "JsonFile.h"
 #include "JsonObject.h"
 #include "VoiceSetup.h"
@@ -130,7 +131,11 @@ std::string presetDirectory()
 {
     if (const char* env = std::getenv("ROSIN_PRESET_DIR"); env != nullptr && *env != '\0')
         return env;
-    return ROSIN_PRESET_DIR;
+    std::error_code ec;
+    for (const auto& folder : installedDataFolders("presets"))
+        if (fs::is_directory(folder, ec))
+            return folder;
+    return ROSIN_PRESET_DIR; // the source tree: tests and tools run from other folders of the build
 }
 
 std::vector<std::string> presetNames()

@@ -10,7 +10,8 @@
 namespace rosin::config
 {
 
-/// The preset folder: $ROSIN_PRESET_DIR if set and non-empty, else the build's ROSIN_PRESET_DIR.
+/// The preset folder: $ROSIN_PRESET_DIR if set and non-empty, else the installed one beside the executable
+/// (InstalledData.h), else the source tree's (the build's ROSIN_PRESET_DIR).
 std::string presetDirectory();
 /// Names (file stems) of the *.json files in presetDirectory(), sorted.
 std::vector<std::string> presetNames();

@@ -1,37 +1,53 @@
 #include "FactoryPrograms.h"
 
+#include <algorithm>
 #include <exception>
+#include <filesystem>
 #include <iostream>
+#include <optional>
 
+#include "FactoryPresetData.h"
+#include "config/JsonFile.h"
 #include "config/PresetLoader.h"
 
 namespace rosin::plugin
 {
 
-std::vector<FactoryProgram> loadFactoryPrograms()
+namespace
 {
-    std::vector<FactoryProgram> programs;
+/// One embedded presets/*.json, parsed like a preset file (errors name "presets/NAME.json").
+std::optional<FactoryProgram> parseEmbedded(const char* resourceName)
+{
+    const std::string fileName = FactoryPresetData::getNamedResourceOriginalFilename(resourceName);
+    if (std::filesystem::path(fileName).extension() != ".json")
+        return std::nullopt;
+    int bytes = 0;
+    const char* data = FactoryPresetData::getNamedResource(resourceName, bytes);
+    const std::string file = "presets/" + fileName;
     try
     {
-        for (const auto& name : config::presetNames())
-        {
-            try
-            {
-                config::Preset preset = config::loadPreset(name);
-                if (preset.rig) // seed 000's oscillator rig: played by `rosin render`, not by the instrument
-                    continue;
-                programs.push_back({name, std::move(preset)});
-            }
-            catch (const std::exception& e)
-            {
-                std::cerr << "rosin: skipping preset " << name << ": " << e.what() << "\n";
-            }
-        }
+        const std::string stem = std::filesystem::path(fileName).stem().string();
+        config::Preset preset = config::parsePreset(
+            config::parseJsonText(std::string(data, static_cast<std::size_t>(bytes)), file), file, stem);
+        if (preset.rig) // seed 000's oscillator rig: played by `rosin render`, not by the instrument
+            return std::nullopt;
+        return FactoryProgram{stem, std::move(preset)};
     }
     catch (const std::exception& e)
     {
-        std::cerr << "rosin: no factory presets: " << e.what() << "\n";
+        std::cerr << "rosin: skipping preset " << file << ": " << e.what() << "\n";
+        return std::nullopt;
     }
+}
+} // namespace
+
+std::vector<FactoryProgram> loadFactoryPrograms()
+{
+    std::vector<FactoryProgram> programs;
+    for (int i = 0; i < FactoryPresetData::namedResourceListSize; ++i)
+        if (auto program = parseEmbedded(FactoryPresetData::namedResourceList[i]))
+            programs.push_back(std::move(*program));
+    std::sort(programs.begin(), programs.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
     if (programs.empty())
         programs.push_back({config::defaultPreset().name, config::defaultPreset()});
     return programs;

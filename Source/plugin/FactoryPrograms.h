@@ -1,7 +1,8 @@
 #pragma once
-// The factory presets (presets/*.json, read with the config loader) as the plugin's programs. Read once, off
-// the audio thread. If the folder is missing (a plugin copied to another machine) there is one built-in
-// program, the default preset, so a host always sees a valid program list.
+// The factory presets as the plugin's programs: presets/*.json, compiled into the plugin (JUCE binary data,
+// FactoryPresetData) so an installed or copied bundle has them without any folder, and parsed with the config
+// loader, once, off the audio thread. Should none parse there is one built-in program, the default preset, so
+// a host always sees a valid program list.
 #include <string>
 #include <vector>
 
@@ -16,7 +17,7 @@ struct FactoryProgram
     config::Preset preset;
 };
 
-/// Every preset that loads; presets that fail to load are skipped (and reported on stderr).
+/// Every embedded preset that loads, by name; presets that fail to load are skipped (and reported on stderr).
 std::vector<FactoryProgram> loadFactoryPrograms();
 /// Index of `name` in `programs`, or 0.
 int findProgram(const std::vector<FactoryProgram>& programs, const std::string& name);

@@ -2,6 +2,8 @@
 // exactly what the original renders.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
 
 #include "PluginTestSupport.h"
@@ -81,6 +83,22 @@ TEST(PluginPrograms, EveryFactoryPresetIsAProgram)
     p.setProgramByName("schumacher-rig");
     EXPECT_EQ(p.parameters().getParameter(plugin::ids::instrument)->getCurrentValueAsText(), "violin");
     EXPECT_EQ(p.parameters().getParameter(plugin::ids::body)->getValue(), 0.0f);
+}
+
+// The programs are compiled into the plugin: a bundle installed or copied anywhere has them, whatever preset
+// folder (none here) the running program would find.
+TEST(PluginPrograms, TheProgramsNeedNoPresetFolder)
+{
+    const auto names = instrumentPresetNames(); // from the source tree's presets/
+    const std::filesystem::path empty = std::filesystem::temp_directory_path() / "rosin-no-presets";
+    std::filesystem::create_directories(empty);
+    ::setenv("ROSIN_PRESET_DIR", empty.c_str(), 1);
+    plugin::RosinProcessor p;
+    ::unsetenv("ROSIN_PRESET_DIR");
+    std::filesystem::remove_all(empty);
+    ASSERT_EQ(p.getNumPrograms(), static_cast<int>(names.size()));
+    for (int i = 0; i < p.getNumPrograms(); ++i)
+        EXPECT_EQ(p.getProgramName(i).toStdString(), names[static_cast<std::size_t>(i)]);
 }
 
 } // namespace

@@ -4,20 +4,12 @@
 #include <filesystem>
 #include <system_error>
 
+#include "config/InstalledData.h"
+
 namespace rosin::scan
 {
 
 namespace fs = std::filesystem;
-
-namespace
-{
-fs::path executableFolder()
-{
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    return ec ? fs::path() : exe.parent_path();
-}
-} // namespace
 
 std::vector<std::string> helperScriptCandidates(const std::string& fileName, const char* environmentVariable,
                                                 const std::string& builtIn)
@@ -26,11 +18,8 @@ std::vector<std::string> helperScriptCandidates(const std::string& fileName, con
     if (overridden != nullptr && *overridden != '\0')
         return {overridden}; // named explicitly: nothing else is tried
     std::vector<std::string> candidates;
-    if (const fs::path exe = executableFolder(); !exe.empty())
-    {
-        candidates.push_back((exe.parent_path() / "share" / "rosin" / "figures" / fileName).string());
-        candidates.push_back((exe / "share" / "rosin" / "figures" / fileName).string());
-    }
+    for (const auto& folder : config::installedDataFolders("figures"))
+        candidates.push_back((fs::path(folder) / fileName).string());
     if (!builtIn.empty())
         candidates.push_back(builtIn);
     return candidates;

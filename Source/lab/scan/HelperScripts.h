@@ -3,7 +3,8 @@
 // copied `rosin` and the build tree both work without the source tree.
 //   1. the environment variable that names the script, when set and non-empty;
 //   2. EXE_DIR/../share/rosin/figures/NAME (an installed rosin: PREFIX/bin/rosin);
-//   3. EXE_DIR/share/rosin/figures/NAME (the build tree: build/rosin, scripts copied at build time);
+//   3. EXE_DIR/share/rosin/figures/NAME (the build tree: build/rosin, scripts copied at build time)
+//      (2 and 3: config/InstalledData.h);
 //   4. the source tree this was built from (tests that run in-process from other folders).
 #include <string>
 #include <vector>
