@@ -17,6 +17,8 @@ inline constexpr float kSilenceRms = 1.0e-5f;
 
 /// The format manager with VST3 and LV2; made on first use under the test's message manager.
 juce::AudioPluginFormatManager& formats();
+/// The registered format called `name` ("VST3" or "LV2"), registering both on first use; nullptr if unknown.
+juce::AudioPluginFormat* format(const juce::String& name);
 /// The scanned description of this build's bundle in that format ("VST3" or "LV2"); fails the test if absent.
 const juce::PluginDescription& description(const juce::String& formatName);
 /// Lets the host's message thread run (JUCE's VST3 host syncs its edit-controller there, timers fire).
