@@ -202,8 +202,9 @@ def system_install(deb, pluginhost, workdir):
         os.makedirs(system_run)
         rosin_checks("/usr", system_run, mark_figure_script=False)
     finally:
-        removed = run(["dpkg", "--purge", "rosin"])
-        check(removed.returncode == 0, "dpkg --purge rosin")
+        removed = run(["dpkg", "--remove", "rosin"])  # what `apt remove` does; the package has no conffiles
+        check(removed.returncode == 0, "dpkg --remove rosin")
+        run(["dpkg", "--purge", "rosin"])
     left = sorted(snapshot() - before)
     check(not left, "removing the package leaves nothing behind (%d new files: %s)" % (len(left), left[:5]))
 
