@@ -39,7 +39,7 @@ std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
     std::vector<unsigned> formatChannels;
     std::optional<WavDataChunk> data;
     std::string overlong;
-    std::uint64_t formatOffset = 0, formatBytes = 0, ds64Offset = 0, ds64Bytes = 0;
+    std::uint64_t formatOffset = 0, formatBytes = 0;
     // Every chunk, also after the data: JUCE's reader reads them all (an "fmt " chunk after the data counts).
     while (position + 8 <= size)
     {
@@ -52,8 +52,8 @@ std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
         {
             data.emplace();
             data->offset = body;
-            // As JUCE's reader decides: in RF64 a nonzero ds64 data size wins over the chunk's own, whatever
-            // that says (a mismatch made JUCE read the samples as further chunks, found by fuzzing).
+            // In RF64 a nonzero ds64 data size wins over the chunk's own, as in JUCE's reader (which is
+            // handed the sizes decided here, rewritten: WavEssentialsStream.h).
             data->declaredBytes = rf64 && rf64DataBytes > 0 ? rf64DataBytes : length;
             data->presentBytes = std::min(data->declaredBytes, size - body);
         }
@@ -70,8 +70,6 @@ std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
         const bool isDs64 = rf64 && std::memcmp(header.data(), "ds64", 4) == 0;
         if (isFormat && formatBytes == 0 && body + length <= size)
             formatOffset = position, formatBytes = 8 + length;
-        if (isDs64 && ds64Bytes == 0 && body + length <= size)
-            ds64Offset = position, ds64Bytes = 8 + length;
         // fmt: format tag (2 bytes), then the channel count (2 bytes).
         if (isFormat && length >= 4 && in.read(reinterpret_cast<char*>(header.data()), 4))
             formatChannels.push_back(static_cast<unsigned>(littleEndian(header.data() + 2, 2)));
@@ -86,7 +84,6 @@ std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
         data->overlongChunk = overlong;
         data->rf64 = rf64;
         data->formatChunkOffset = formatOffset, data->formatChunkBytes = formatBytes;
-        data->ds64ChunkOffset = ds64Offset, data->ds64ChunkBytes = ds64Bytes;
     }
     return data;
 }

@@ -25,10 +25,9 @@ struct WavDataChunk
     /// from a 756-byte file, found by fuzzing), so such a file never reaches it.
     std::string overlongChunk;
     bool rf64 = false;
-    /// Where the first "fmt " chunk (and, in RF64, the "ds64" chunk) lies: header included, padding not.
-    /// openWavEssentials gives JUCE only these and the data.
+    /// Where the first "fmt " chunk lies: header included, padding not (openWavEssentials gives JUCE only
+    /// this chunk and the data).
     std::uint64_t formatChunkOffset = 0, formatChunkBytes = 0;
-    std::uint64_t ds64ChunkOffset = 0, ds64ChunkBytes = 0;
 };
 
 /// Walks the RIFF (or RF64) chunks to the "data" chunk. std::nullopt when the file is not RIFF/WAVE or has

@@ -80,20 +80,30 @@ std::unique_ptr<juce::InputStream> openWavEssentials(const juce::File& file, con
     juce::FileInputStream in(file);
     if (!in.openedOk())
         return nullptr;
-    juce::MemoryOutputStream chunks; // after "WAVE", up to the first sample byte
-    bool ok = !chunk.rf64 || copyChunk(in, chunk.ds64ChunkOffset, chunk.ds64ChunkBytes, chunks);
-    ok = ok && copyChunk(in, chunk.formatChunkOffset, chunk.formatChunkBytes, chunks);
-    ok =
-        ok && copyRange(in, chunk.offset - 8, 8, chunks); // the data chunk's own header, its length unchanged
-    if (!ok)
+    juce::MemoryOutputStream format; // the first fmt chunk as the file has it, and its pad byte
+    if (!copyChunk(in, chunk.formatChunkOffset, chunk.formatChunkBytes, format))
         return nullptr;
+    // The sizes are written anew from what findWavDataChunk decided, so JUCE's reader cannot see the data end
+    // elsewhere (fuzzing found two ways: a ds64 data size it reads as negative, and one the data chunk's own
+    // size contradicts) and go on to read samples as chunks. RF64: a ds64 chunk of 28 bytes.
+    const juce::uint64 ds64Bytes = chunk.rf64 ? 8 + 28 : 0;
+    const juce::uint64 riffBytes = 4 + ds64Bytes + format.getDataSize() + 8 + chunk.declaredBytes;
     juce::MemoryOutputStream head;
     head.write(chunk.rf64 ? "RF64" : "RIFF", 4);
-    // RF64 keeps its sizes in ds64; a RIFF size cannot say more than 32 bits hold.
-    const juce::uint64 riffBytes = 4 + chunks.getDataSize() + chunk.presentBytes;
     head.writeInt(chunk.rf64 ? -1 : static_cast<int>(std::min<juce::uint64>(riffBytes, 0xffffffffu)));
     head.write("WAVE", 4);
-    head << chunks.getMemoryBlock();
+    if (chunk.rf64)
+    {
+        head.write("ds64", 4);
+        head.writeInt(28);
+        head.writeInt64(static_cast<juce::int64>(riffBytes));
+        head.writeInt64(static_cast<juce::int64>(chunk.declaredBytes));
+        head.writeInt64(0); // sample count: unused by readers that have the data size
+        head.writeInt(0);   // no table
+    }
+    head << format.getMemoryBlock();
+    head.write("data", 4);
+    head.writeInt(chunk.rf64 ? -1 : static_cast<int>(chunk.declaredBytes)); // RIFF: it came from 32 bits
     auto data = std::make_unique<juce::FileInputStream>(file);
     if (!data->openedOk())
         return nullptr;

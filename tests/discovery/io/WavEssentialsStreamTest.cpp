@@ -52,6 +52,14 @@ std::string riff(const std::string& chunks)
     return "RIFF" + u32(static_cast<unsigned>(4 + chunks.size())) + "WAVE" + chunks;
 }
 
+// The header JUCE is handed for an RF64 file: sizes rewritten from what the chunk walker decided.
+std::string rf64Head(const std::string& format, std::size_t dataBytes)
+{
+    const std::size_t riffBytes = 4 + 36 + format.size() + 8 + dataBytes;
+    return "RF64" + u32(0xffffffffu) + "WAVE" + "ds64" + u32(28) + u64(riffBytes) + u64(dataBytes) + u64(0) +
+           u32(0) + format + "data" + u32(0xffffffffu);
+}
+
 // What a damaged file's iXML chunk looked like: an XML element cut off with no closing bracket.
 const std::string kDamagedIxml = chunk("iXML", "<q>\x13\x8e\xff\xff\xffNSt6lo\xdf\xff\xff");
 const std::string kList = chunk("LIST", "INFOISFT" + u32(5) + "rosin" + std::string(1, '\0'));
@@ -114,21 +122,19 @@ TEST_F(WavEssentialsStreamTest, TheFirstFormatChunkIsTheOneKept)
 }
 
 // RF64 keeps the data size in its ds64 chunk; the data chunk's own size reads 0xffffffff.
-TEST_F(WavEssentialsStreamTest, Rf64KeepsItsDs64Chunk)
+TEST_F(WavEssentialsStreamTest, Rf64SizesAreWrittenAnewFromTheDs64Chunk)
 {
     const std::string samples = sampleBytes();
     const std::string rest = kDamagedIxml + kFormat + "data" + u32(0xffffffffu) + samples;
     const std::size_t riffBytes = 4 + 8 + 28 + rest.size(); // "WAVE", the ds64 chunk, the rest
     const std::string ds64 = chunk("ds64", u64(riffBytes) + u64(samples.size()) + u64(3) + u32(0));
-    const std::string data = "data" + u32(0xffffffffu) + samples;
-    const std::string body = "WAVE" + ds64 + rest;
-    write("RF64" + u32(0xffffffffu) + body);
-    EXPECT_EQ(essentials(), "RF64" + u32(0xffffffffu) + "WAVE" + ds64 + kFormat + data);
+    write("RF64" + u32(0xffffffffu) + "WAVE" + ds64 + rest);
+    EXPECT_EQ(essentials(), rf64Head(kFormat, samples.size()) + samples);
     expectSamplesBack();
 }
 
 // Found by fuzzing: an RF64 file whose ds64 data size is smaller than its data chunk's own size. JUCE's
-// reader takes the ds64 size and read the rest of the samples as further chunks (one claimed 2 GB); the data
+// reader took the ds64 size and read the rest of the samples as further chunks (one claimed 2 GB); the data
 // handed to it now ends where the ds64 size says.
 TEST_F(WavEssentialsStreamTest, Rf64DataEndsWhereDs64Says)
 {
@@ -138,13 +144,35 @@ TEST_F(WavEssentialsStreamTest, Rf64DataEndsWhereDs64Says)
     const std::size_t riffBytes = 4 + 8 + 28 + rest.size();
     const std::string ds64 = chunk("ds64", u64(riffBytes) + u64(samples.size()) + u64(3) + u32(0));
     write("RF64" + u32(0xffffffffu) + "WAVE" + ds64 + rest);
-    EXPECT_EQ(essentials(),
-              "RF64" + u32(0xffffffffu) + "WAVE" + ds64 + kFormat + "data" + u32(0x2a00) + samples);
+    EXPECT_EQ(essentials(), rf64Head(kFormat, samples.size()) + samples);
     expectSamplesBack();
 }
 
+// Found by fuzzing: a ds64 data size above 2^63, which JUCE reads as negative and so ignores, taking the data
+// chunk's own size instead and reading what follows (an iXML chunk) as metadata. The stream says what the
+// walker decided, and the file is refused as truncated.
+TEST_F(WavEssentialsStreamTest, Rf64DataSizeJuceReadsAsNegativeIsTruncation)
+{
+    const std::string samples = sampleBytes();
+    const unsigned long long huge = 0xbaa9be58fffffc50ull;
+    const std::string rest =
+        kFormat + "data" + u32(static_cast<unsigned>(samples.size())) + samples + kDamagedIxml;
+    const std::string ds64 = chunk("ds64", u64(1000) + u64(huge) + u64(0) + u32(0));
+    write("RF64" + u32(0xffffffffu) + "WAVE" + ds64 + rest);
+    EXPECT_EQ(essentials(), rf64Head(kFormat, huge) + samples + kDamagedIxml);
+    try
+    {
+        readTrialSignals(dataset, trial);
+        ADD_FAILURE() << "accepted";
+    }
+    catch (const DatasetError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("truncated"), std::string::npos) << e.what();
+    }
+}
+
 // Found by fuzzing: a ds64 chunk of odd length lost its pad byte on the way, and JUCE read the next chunk one
-// byte off. Odd-length ds64 and fmt chunks keep their pad.
+// byte off. Odd-length chunks are walked over with their pad; the fmt chunk keeps it.
 TEST_F(WavEssentialsStreamTest, OddLengthChunksKeepTheirPadByte)
 {
     const std::string samples = sampleBytes();
@@ -155,7 +183,7 @@ TEST_F(WavEssentialsStreamTest, OddLengthChunksKeepTheirPadByte)
     const std::string ds64 = chunk("ds64", u64(riffBytes) + u64(samples.size()) + u64(3) + u32(0) + "y");
     ASSERT_EQ(ds64.size(), 8u + 30u); // 29 bytes and the pad
     write("RF64" + u32(0xffffffffu) + "WAVE" + ds64 + rest);
-    EXPECT_EQ(essentials(), "RF64" + u32(0xffffffffu) + "WAVE" + ds64 + rest);
+    EXPECT_EQ(essentials(), rf64Head(oddFormat, samples.size()) + samples);
     expectSamplesBack();
 }
 
