@@ -9,8 +9,8 @@
 #include <string>
 
 #include "PeerBenchmark.h"
-#include "physics/friction/FrictionLawFactory.h"
 #include "physics/instrument/BowedInstrument.h"
+#include "physics/laws/FrictionLawFactory.h"
 #include "physics/voice/BowedStringVoice.h"
 
 namespace

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "Preset.h"
-#include "physics/friction/FrictionLawFactory.h"
+#include "physics/laws/FrictionLawFactory.h"
 #include "physics/voice/VoiceConfig.h"
 
 namespace rosin::config

@@ -7,7 +7,7 @@
 
 #include "OutputStage.h"
 #include "gesture/GestureParameters.h"
-#include "physics/friction/FrictionLawFactory.h"
+#include "physics/laws/FrictionLawFactory.h"
 
 namespace rosin::plugin
 {

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "physics/friction/FrictionEffects.h"
-#include "physics/friction/FrictionLawFactory.h"
 #include "physics/friction/JunctionGrowthLaw.h"
 #include "physics/friction/StickingCreepLaw.h"
+#include "physics/laws/FrictionLawFactory.h"
 #include "physics/voice/BowedStringVoice.h"
 #include "support/TestLaws.h"
 

@@ -6,7 +6,7 @@
 #include <numeric>
 
 #include "physics/friction/CurveFrictionLaw.h"
-#include "physics/friction/FrictionLawFactory.h"
+#include "physics/laws/FrictionLawFactory.h"
 #include "support/Runs.h"
 
 using namespace rosin;

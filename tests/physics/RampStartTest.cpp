@@ -10,8 +10,8 @@
 #include <cmath>
 #include <memory>
 
-#include "physics/friction/FrictionLawFactory.h"
 #include "physics/lanes/RampStart.h"
+#include "physics/laws/FrictionLawFactory.h"
 
 using namespace rosin::physics;
 

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "physics/friction/CurveFrictionLaw.h"
-#include "physics/friction/FrictionLawFactory.h"
 #include "physics/instrument/BowedInstrument.h"
+#include "physics/laws/FrictionLawFactory.h"
 #include "physics/voice/BowedStringVoice.h"
 #include "support/AllocationCounter.h"
 #include "support/TestLaws.h"

@@ -7,7 +7,7 @@
 //  * viscous: forward slipping, the string overtaking the bow (seed 000, seed 002 Fig. 4); plastic never.
 #include <gtest/gtest.h>
 
-#include "physics/friction/FrictionLawFactory.h"
+#include "physics/laws/FrictionLawFactory.h"
 #include "support/Runs.h"
 
 using namespace rosin;

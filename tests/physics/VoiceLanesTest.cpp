@@ -9,8 +9,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "physics/friction/FrictionLawFactory.h"
 #include "physics/lanes/VoiceLanes.h"
+#include "physics/laws/FrictionLawFactory.h"
 
 using namespace rosin::physics;
 

@@ -6,7 +6,7 @@
 
 #include "RigTestSupport.h"
 #include "physics/friction/FrictionCurves.h"
-#include "physics/friction/PlasticThermalLaw.h"
+#include "physics/thermal/PlasticThermalLaw.h"
 
 using namespace rosin::physics;
 using namespace rosin::test::rig;

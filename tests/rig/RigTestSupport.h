@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "physics/friction/FrictionLawFactory.h"
+#include "physics/laws/FrictionLawFactory.h"
 #include "physics/rig/CantileverContact.h"
 #include "physics/rig/RigCalibration.h"
 

@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <new>
 
-#include "physics/friction/FrictionLawFactory.h"
+#include "physics/laws/FrictionLawFactory.h"
 #include "physics/thermal/HeatBalance.h"
 #include "support/AllocationCounter.h"
 

@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <numbers>
 
-#include "physics/friction/FrictionLawFactory.h"
 #include "physics/lanes/PlasticLanes.h"
+#include "physics/laws/FrictionLawFactory.h"
 
 using namespace rosin::physics;
 

@@ -6,11 +6,11 @@
 #include <cstdio>
 #include <numbers>
 
-#include "physics/friction/ModifiedThermalLaw.h"
-#include "physics/friction/PlasticThermalLaw.h"
-#include "physics/friction/ViscousThermalLaw.h"
 #include "physics/thermal/HeatBalance.h"
+#include "physics/thermal/ModifiedThermalLaw.h"
+#include "physics/thermal/PlasticThermalLaw.h"
 #include "physics/thermal/ThermalCalibration.h"
+#include "physics/thermal/ViscousThermalLaw.h"
 
 using namespace rosin::physics;
 

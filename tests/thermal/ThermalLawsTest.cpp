@@ -8,11 +8,11 @@
 #include <random>
 #include <stdexcept>
 
-#include "physics/friction/FrictionLawFactory.h"
-#include "physics/friction/ModifiedThermalLaw.h"
-#include "physics/friction/PlasticThermalLaw.h"
-#include "physics/friction/ViscousThermalLaw.h"
+#include "physics/laws/FrictionLawFactory.h"
 #include "physics/thermal/HeatBalance.h"
+#include "physics/thermal/ModifiedThermalLaw.h"
+#include "physics/thermal/PlasticThermalLaw.h"
+#include "physics/thermal/ViscousThermalLaw.h"
 
 using namespace rosin::physics;
 

@@ -8,7 +8,7 @@
 #include "discovery/ParallelTrials.h"
 #include "discovery/SensorChain.h"
 #include "discovery/TrialSimulator.h"
-#include "physics/friction/FrictionLawFactory.h"
+#include "physics/laws/FrictionLawFactory.h"
 
 namespace rosin::discovery
 {

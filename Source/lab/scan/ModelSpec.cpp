@@ -2,7 +2,7 @@
 
 #include "config/VoiceSetup.h"
 #include "physics/body/BodyParameters.h"
-#include "physics/friction/FrictionLawFactory.h"
+#include "physics/laws/FrictionLawFactory.h"
 
 namespace rosin::scan
 {

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "../body/BridgeBody.h"
-#include "../friction/FrictionLawFactory.h"
+#include "../laws/FrictionLawFactory.h"
 #include "../voice/BowedStringVoice.h"
 
 namespace rosin::physics

@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-#include "../friction/PlasticThermalLaw.h"
+#include "../thermal/PlasticThermalLaw.h"
 #include "LaneFriction.h"
 
 namespace rosin::physics

@@ -5,8 +5,8 @@
 // At fixed T the law is linear, so the load-line solve is closed-form: dv = 2Z dvh / (2Z + c). There is no
 // sticking barrier (seed 002 Fig. 4): the string always creeps, if only at ~1e-8 of dvh when cold.
 // eta(T) is calibrated on the steady-sliding rig (ThermalCalibration::Viscosity).
-#include "../thermal/ThermalContact.h"
-#include "FrictionLaw.h"
+#include "../friction/FrictionLaw.h"
+#include "ThermalContact.h"
 
 namespace rosin::physics
 {

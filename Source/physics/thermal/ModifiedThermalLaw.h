@@ -7,10 +7,10 @@
 // reproduces mu_steady (eq. 11): ThermalCalibration::ModifiedBow / ModifiedRod.
 // Hertz contact scaling (A ~ Fb^(2/3), reference §8.3): A = K Fb (Fb/N_ref)^(-1/3), so the force is
 // multiplied by (Fb/N_ref)^(-1/3); with Coulomb scaling the factor is 1.
-#include "../thermal/ThermalContact.h"
-#include "CurveJunctionSolver.h"
-#include "FrictionCurves.h"
-#include "FrictionLaw.h"
+#include "../friction/CurveJunctionSolver.h"
+#include "../friction/FrictionCurves.h"
+#include "../friction/FrictionLaw.h"
+#include "ThermalContact.h"
 
 namespace rosin::physics
 {

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "../friction/FrictionLaw.h"
 #include "../thermal/ContactParameters.h"
-#include "FrictionLaw.h"
 
 namespace rosin::physics
 {

@@ -4,10 +4,10 @@
 #include <array>
 #include <stdexcept>
 
-#include "CurveFrictionLaw.h"
-#include "ModifiedThermalLaw.h"
-#include "PlasticThermalLaw.h"
-#include "ViscousThermalLaw.h"
+#include "../friction/CurveFrictionLaw.h"
+#include "../thermal/ModifiedThermalLaw.h"
+#include "../thermal/PlasticThermalLaw.h"
+#include "../thermal/ViscousThermalLaw.h"
 
 namespace rosin::physics
 {

@@ -6,8 +6,8 @@
 // alone). tau_y(T) is calibrated on the steady-sliding rig (ThermalCalibration::YieldStress), so at ambient
 // the limiting static coefficient is 1.2 (A_rig/Fb)/(A_cal/F_cal) = 0.90 for the Galluzzo contact
 // (reference §2.1, from seed 001 Fig. 14).
-#include "../thermal/ThermalContact.h"
-#include "FrictionLaw.h"
+#include "../friction/FrictionLaw.h"
+#include "ThermalContact.h"
 
 namespace rosin::physics
 {
