@@ -38,11 +38,12 @@ inline std::string slurp(const std::filesystem::path& path)
 
 #if defined(ROSIN_BINARY) && defined(ROSIN_SOURCE_PRESET_DIR)
 /// Runs the built `rosin` with `args` in `workDir` (factory presets from the source tree), capturing its
-/// output in workDir/stdout.txt and workDir/stderr.txt.
-inline Result runRosin(const std::string& workDir, const std::vector<std::string>& args)
+/// output in workDir/stdout.txt and workDir/stderr.txt. `environment`: more NAME=VALUE settings for the run.
+inline Result runRosin(const std::string& workDir, const std::vector<std::string>& args,
+                       const std::string& environment = "")
 {
     std::string command = "cd " + quote(workDir) + " && ROSIN_PRESET_DIR=" + quote(ROSIN_SOURCE_PRESET_DIR) +
-                          " " + quote(ROSIN_BINARY);
+                          " " + environment + " " + quote(ROSIN_BINARY);
     for (const auto& a : args)
         command += " " + quote(a);
     const std::string out = workDir + "/stdout.txt", err = workDir + "/stderr.txt";
