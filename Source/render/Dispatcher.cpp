@@ -8,6 +8,7 @@
 #include "RenderCommand.h"
 #include "ScanCommand.h"
 #include "SynthDataCommand.h"
+#include "physics/modal/SimdLevel.h"
 
 #ifndef ROSIN_VERSION
 #define ROSIN_VERSION "unknown"
@@ -87,7 +88,10 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     }
     if (first == "--version")
     {
-        out << "rosin " ROSIN_VERSION "\n";
+        // The vector path the kernels run on: results round differently per path (README "Tests").
+        out << "rosin " ROSIN_VERSION "\n"
+            << "kernels: " << physics::simdLevelName(physics::simdLevel())
+            << " (ROSIN_SIMD chooses a lower one)\n";
         return kExitOk;
     }
     const Command* command = findCommand(first);

@@ -15,6 +15,7 @@
 #include "Dispatcher.h"
 #include "config/TempFiles.h"
 #include "physics/body/BridgeBody.h"
+#include "physics/modal/SimdLevel.h"
 
 namespace
 {
@@ -321,6 +322,10 @@ TEST(CliInProcess, DispatcherIsCallableFromALibrary)
     std::ostringstream out, err;
     EXPECT_EQ(rosin::cli::run({"--version"}, out, err), 0);
     EXPECT_EQ(out.str().rfind("rosin ", 0), 0u);
+    EXPECT_NE(
+        out.str().find(std::string("kernels: ") + rosin::physics::simdLevelName(rosin::physics::simdLevel())),
+        std::string::npos)
+        << out.str();
     std::ostringstream out2, err2;
     EXPECT_EQ(rosin::cli::run({"render", "--gesture", "guettler:beta=0.6"}, out2, err2), 1);
     EXPECT_NE(err2.str().find("field \"beta\""), std::string::npos) << err2.str();
