@@ -40,7 +40,7 @@ std::optional<WavDataChunk> findWavDataChunk(const std::filesystem::path& file)
     std::optional<WavDataChunk> data;
     std::string overlong;
     std::uint64_t formatOffset = 0, formatBytes = 0;
-    // Every chunk, also after the data: JUCE's reader reads them all (an "fmt " chunk after the data counts).
+    // Every chunk, also after the data, so that a damaged one is named (JUCE sees only the essential ones).
     while (position + 8 <= size)
     {
         in.seekg(static_cast<std::streamoff>(position));
