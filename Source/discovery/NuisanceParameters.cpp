@@ -56,6 +56,14 @@ const std::vector<NuisanceParameter>& nuisanceParameters()
     return parameters;
 }
 
+bool isMeasurementChain(const EffectParameter& prior) noexcept
+{
+    for (const auto& p : nuisanceParameters())
+        if (&p.prior == &prior)
+            return p.measurementChain;
+    return false;
+}
+
 double sensorLowpassHz(const NuisanceValues& values, double sampleRate) noexcept
 {
     // Within 1 % of Nyquist the filter would do nothing but ring: treat it as absent.

@@ -60,6 +60,10 @@ struct NuisanceParameter
 /// The eight parameters in the order above.
 const std::vector<NuisanceParameter>& nuisanceParameters();
 
+/// Whether `prior` is the prior of one of the measurement chain's parameters (by identity, not by name: an
+/// effect may name a parameter alike).
+bool isMeasurementChain(const EffectParameter& prior) noexcept;
+
 /// The low-pass corner in Hz that `values` give at `sampleRate`; 0 when it is at Nyquist (no filter).
 double sensorLowpassHz(const NuisanceValues& values, double sampleRate) noexcept;
 

@@ -13,6 +13,9 @@ ModelFit::ModelFit(const SearchInputs& inputs, std::vector<const EffectParameter
                    ModelBuilder build, const std::vector<double>& start)
     : in_(inputs), coordinates_(std::move(coordinates)), build_(std::move(build))
 {
+    for (const EffectParameter* c : coordinates_)
+        chain_.push_back(isMeasurementChain(*c));
+    reusesRuns_ = std::find(chain_.begin(), chain_.end(), true) != chain_.end();
     bestValue_ = 1e300;
     objective(start);
 }
@@ -21,7 +24,8 @@ double ModelFit::objective(const std::vector<double>& values)
 {
     if (auto it = memo_.find(values); it != memo_.end())
         return it->second;
-    const auto sim = simulateFeatures(build_(values), *in_.dataset, in_.training, in_.seconds, in_.threads);
+    const auto sim = simulateFeatures(build_(values), *in_.dataset, in_.training, in_.seconds, in_.threads,
+                                      {}, reusesRuns_ ? &runsFor(values) : nullptr);
     ++evaluations_;
     const double o = fitGap(in_.training, in_.measured, sim, in_.scatter, in_.reference).objective;
     if (o < bestValue_)
@@ -30,6 +34,33 @@ double ModelFit::objective(const std::vector<double>& values)
         best_ = values;
     }
     return memo_[values] = o;
+}
+
+StringRuns& ModelFit::runsFor(const std::vector<double>& values)
+{
+    std::vector<double> physics;
+    for (std::size_t j = 0; j < values.size(); ++j)
+        if (!chain_[j])
+            physics.push_back(values[j]);
+    auto it =
+        std::find_if(runs_.begin(), runs_.end(), [&physics](const auto& r) { return r.first == physics; });
+    if (it != runs_.end())
+        runs_.splice(runs_.begin(), runs_, it);
+    else
+        runs_.emplace_front(std::move(physics), StringRuns{});
+    // The runs of the points used longest ago go first; the newest always stays (it is about to be filled).
+    std::size_t bytes = 0;
+    for (auto r = runs_.begin(); r != runs_.end(); ++r)
+    {
+        for (const auto& run : r->second)
+            bytes += run.bytes();
+        if (bytes > kRunBudgetBytes && r != runs_.begin())
+        {
+            runs_.erase(r, runs_.end());
+            break;
+        }
+    }
+    return runs_.front().second;
 }
 
 // To 3 significant digits of the value or of a linear prior's width (ModelFit.h).

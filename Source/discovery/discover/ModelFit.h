@@ -2,13 +2,17 @@
 // Fitting numbers of a model to the training trials, shared by the effect fit (EffectSearch) and the
 // calibration of the nuisance parameters (Calibration): the objective (GapSummary::objective over the
 // training trials), memoised so no point is simulated twice; a grid over full ranges; a golden-section
-// refinement of one coordinate around the best point. Coordinates are searched on a log scale where their
-// EffectParameter says so; a choice is searched by the grid only. JUCE-free.
+// refinement of one coordinate around the best point. Points that differ only in the measurement chain's
+// numbers (sensorGain, sensorBandwidth, sensorDelay) share the string's simulation (ModelRuns.h StringRuns).
+// Coordinates are searched on a log scale where their EffectParameter says so; a choice is searched by the
+// grid only. JUCE-free.
 #include <cstddef>
 #include <functional>
+#include <list>
 #include <map>
 #include <vector>
 
+#include "ModelRuns.h"
 #include "SearchInputs.h"
 #include "discovery/EffectCatalog.h"
 #include "discovery/SimulationModel.h"
@@ -47,6 +51,9 @@ class ModelFit
     int evaluations() const noexcept { return evaluations_; }
 
   private:
+    /// The string's simulations for `values`' physics (the values of the coordinates outside the chain):
+    /// kept for the most recently used points, within kRunBudgetBytes.
+    StringRuns& runsFor(const std::vector<double>& values);
     double toSearch(std::size_t j, double v) const;
     double fromSearch(std::size_t j, double x) const;
 
@@ -57,6 +64,10 @@ class ModelFit
     double bestValue_ = 0.0;
     int evaluations_ = 0;
     std::map<std::vector<double>, double> memo_;
+    std::vector<bool> chain_; ///< coordinate j is one of the measurement chain's
+    bool reusesRuns_ = false; ///< some coordinate is: points can share a simulation
+    std::list<std::pair<std::vector<double>, StringRuns>> runs_; ///< most recently used first
+    static constexpr std::size_t kRunBudgetBytes = std::size_t{128} << 20;
 };
 
 } // namespace rosin::discovery

@@ -31,11 +31,26 @@ struct SettingsNudge
     double motion = 1.0; ///< the acceleration of a constant-acceleration gesture, the speed of a steady one
 };
 
+/// One simulated trial's recorded channels through the dataset's stated sensor, before the calibrated chain:
+/// what a fit that changes only the chain (sensorGain, sensorBandwidth, sensorDelay) can reuse.
+struct StringRun
+{
+    std::vector<Channel> layout;
+    std::vector<std::vector<double>> channels;
+    std::size_t bytes() const noexcept;
+};
+/// Indexed like dataset.trials; a run with no channels was not simulated.
+using StringRuns = std::vector<StringRun>;
+
 /// Features of the dataset's trials `trials` (indices into dataset.trials) simulated with `model`;
-/// `seconds[i]` is trial i's length. Results are indexed like dataset.trials (others left empty).
+/// `seconds[i]` is trial i's length. Results are indexed like dataset.trials (others left empty). With
+/// `runs`, a trial whose run is there is not simulated again, only sent through `model`'s chain, and a trial
+/// simulated now leaves its run there: the caller vouches that `runs` came from a model with the same physics
+/// (everything but the chain's three numbers), the same `seconds` and `nudge`. The features are the same
+/// either way, bit for bit.
 std::vector<TrialFeatures> simulateFeatures(const SimulationModel& model, const Dataset& dataset,
                                             const std::vector<std::size_t>& trials,
                                             const std::vector<double>& seconds, unsigned threads,
-                                            SettingsNudge nudge = {});
+                                            SettingsNudge nudge = {}, StringRuns* runs = nullptr);
 
 } // namespace rosin::discovery
