@@ -21,9 +21,15 @@ Dataset twoTrials()
     d.rig.string = rosin::physics::stringFromCatalogue("cello-D3");
     d.rig.body = "cello";
     d.sensor.highpassHz = 0.5;
-    d.trials = {Trial{.id = "a", .file = "a.wav", .beta = 0.0899, .bowForce = 0.8,
+    d.trials = {Trial{.id = "a",
+                      .file = "a.wav",
+                      .beta = 0.0899,
+                      .bowForce = 0.8,
                       .gesture = ConstantAcceleration{1.5}},
-                Trial{.id = "b", .file = "b.wav", .beta = 0.0899, .bowForce = 0.4,
+                Trial{.id = "b",
+                      .file = "b.wav",
+                      .beta = 0.0899,
+                      .bowForce = 0.4,
                       .gesture = ConstantAcceleration{3.0}}};
     return d;
 }
