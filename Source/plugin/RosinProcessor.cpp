@@ -161,25 +161,14 @@ void RosinProcessor::prepareToPlay(double sampleRate, int maximumExpectedSamples
     prepared_ = true;
 
     const Engine& engine = *slot_.active();
-    prepareGesture(engine);
-    controllerSerial_ = engine.serial;
+    performer_.prepare(engine.serial, engine.openFrequencies.data(), engine.instrument.stringCount(),
+                       sampleRate);
     collectBodyResponse(); // a response set before is built in prepare, ready for the first block
     output_.prepare(sampleRate, kGainSmoothingSeconds, maximumExpectedSamplesPerBlock);
     setLatencySamples(output_.latencySamples());
-    for (auto& d : detectors_)
-        d.prepare(sampleRate);
     resetRequested_ = false;
     runawayResets_ = 0;
     nonFiniteSamples_ = 0;
-}
-
-void RosinProcessor::prepareGesture(const Engine& engine)
-{
-    const int strings = engine.instrument.stringCount();
-    controller_.prepare(engine.openFrequencies.data(), strings, engine.sampleRate);
-    for (int s = 0; s < strings; ++s)
-        ears_[static_cast<std::size_t>(s)].prepare(engine.openFrequencies[static_cast<std::size_t>(s)],
-                                                   engine.sampleRate);
 }
 
 void RosinProcessor::releaseResources()
@@ -187,7 +176,7 @@ void RosinProcessor::releaseResources()
     std::lock_guard<std::mutex> lock(builderMutex_);
     slot_.installNow(nullptr);
     prepared_ = false;
-    controllerSerial_ = -1;
+    performer_.release();
 }
 
 void RosinProcessor::reset()
@@ -217,6 +206,62 @@ bool RosinProcessor::isBusesLayoutSupported(const BusesLayout& layouts) const
            (out == juce::AudioChannelSet::mono() || out == juce::AudioChannelSet::stereo());
 }
 
+namespace
+{
+// The host's MIDI for one block, decoded as the performer reaches each event's sample (undecodable ones are
+// skipped).
+class MidiEvents final : public performer::EventSource
+{
+  public:
+    explicit MidiEvents(const juce::MidiBuffer& midi) : next_(midi.cbegin()), end_(midi.cend()) {}
+    bool next(int sample, gesture::GestureEvent& event) noexcept override
+    {
+        while (next_ != end_ && (*next_).samplePosition <= sample)
+            if (decode(sample, event))
+                return true;
+        return false;
+    }
+    bool remaining(int sample, gesture::GestureEvent& event) noexcept override
+    {
+        while (next_ != end_)
+            if (decode(sample, event))
+                return true;
+        return false;
+    }
+
+  private:
+    bool decode(int sample, gesture::GestureEvent& event) noexcept
+    {
+        const auto m = *next_;
+        ++next_;
+        return gesture::decodeMidi(m.data, m.numBytes, sample, event);
+    }
+    juce::MidiBufferIterator next_, end_;
+};
+
+// Each sample through the output stage into the host's first channel.
+class ToOutputStage final : public performer::SampleSink
+{
+  public:
+    ToOutputStage(OutputStage& stage, const OutputSettings& settings, float* out) noexcept
+        : stage_(stage), settings_(settings), out_(out)
+    {
+    }
+    void take(int i, const physics::BowedInstrument& instrument, double bridgeForce) noexcept override
+    {
+        bool bad = false;
+        out_[i] = stage_.sample(i, instrument, bridgeForce, settings_, bad);
+        nonFinite += bad ? 1 : 0;
+    }
+    int nonFinite = 0;
+
+  private:
+    OutputStage& stage_;
+    const OutputSettings& settings_;
+    float* out_;
+};
+} // namespace
+
 void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBuffer& midi)
 {
     juce::ScopedNoDenormals noDenormals;
@@ -228,41 +273,16 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
 
     physics::BowedInstrument& instrument = engine->instrument;
     const int strings = instrument.stringCount();
-    if (engine->serial != controllerSerial_)
-    {
-        // A rebuilt instrument starts at rest; the gesture continues unless the strings changed (instrument
-        // switch), where the controller is re-prepared (fixed-size state: no allocation).
-        bool sameStrings = controllerSerial_ >= 0 && controller_.stringCount() == strings;
-        for (int i = 0; sameStrings && i < strings; ++i)
-            sameStrings =
-                controller_.openFrequency(i) == engine->openFrequencies[static_cast<std::size_t>(i)];
-        if (!sameStrings)
-            prepareGesture(*engine);
-        controllerSerial_ = engine->serial;
-    }
+    performer_.follow(engine->serial, engine->openFrequencies.data(), strings, engine->sampleRate);
     if (resetRequested_.exchange(false))
     {
         instrument.reset();
-        controller_.reset();
+        performer_.reset();
         output_.reset();
-        for (auto& d : detectors_)
-            d.reset();
-        for (auto& ear : ears_)
-            ear.reset();
     }
 
     const ParameterSnapshot snapshot = reader_.read(strings);
-    controller_.setParameters(snapshot.gesture);
-    for (int s = 0; s < strings; ++s)
-        ears_[static_cast<std::size_t>(s)].setEnabled(snapshot.intonationByEar);
-    for (int s = 0; s < strings; ++s)
-    {
-        // The finger ratio of the previous sample: good enough for the regime's nominal period.
-        const auto k = static_cast<std::size_t>(s);
-        const double ratio = inputs_[k].fingerRatio > 0.0 ? inputs_[k].fingerRatio : 1.0;
-        detectors_[k].setNominalFrequency(engine->openFrequencies[k] / ratio);
-    }
-
+    performer_.beginBlock({snapshot.gesture, snapshot.intonationByEar});
     collectBodyResponse();
     // The on-screen keyboard's notes, at the block's first sample.
     keyboardQueue_.drain(
@@ -270,50 +290,14 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
         {
             gesture::GestureEvent e;
             if (gesture::decodeMidi(bytes, size, 0, e))
-                controller_.handleEvent(e);
+                performer_.handleEvent(e);
         });
 
     float* out = buffer.getWritePointer(0);
-    auto event = midi.cbegin();
-    const auto end = midi.cend();
-    int runaways = 0, nonFinite = 0;
-    for (int i = 0; i < numSamples; ++i)
-    {
-        // Events at their sample: the output does not depend on how the host cuts blocks.
-        for (; event != end && (*event).samplePosition <= i; ++event)
-        {
-            const auto m = *event;
-            gesture::GestureEvent e;
-            if (gesture::decodeMidi(m.data, m.numBytes, i, e))
-                controller_.handleEvent(e);
-        }
-        controller_.next(inputs_.data());
-        for (int s = 0; s < strings; ++s)
-        {
-            auto& in = inputs_[static_cast<std::size_t>(s)];
-            in.fingerRatio = ears_[static_cast<std::size_t>(s)].finger(in.fingerRatio);
-        }
-        double y = instrument.step(inputs_.data(), outputs_.data());
-        if (instrument.recoveredFromRunaway())
-            ++runaways;
-        for (int s = 0; s < strings; ++s)
-        {
-            const auto k = static_cast<std::size_t>(s);
-            detectors_[k].push(outputs_[k], inputs_[k].bowForce);
-            ears_[k].listen(outputs_[k].sticking, outputs_[k].bowPointVelocity, outputs_[k].bowVelocity);
-        }
-        bool bad = false;
-        out[i] = output_.sample(i, instrument, y, snapshot.output, bad);
-        nonFinite += bad ? 1 : 0;
-    }
+    MidiEvents events(midi);
+    ToOutputStage sink(output_, snapshot.output, out);
+    const int runaways = performer_.process(instrument, events, sink, numSamples);
     output_.finishBlock(out, numSamples, snapshot.output);
-    for (; event != end; ++event) // events stamped past the block's end (malformed host data)
-    {
-        const auto m = *event;
-        gesture::GestureEvent e;
-        if (gesture::decodeMidi(m.data, m.numBytes, numSamples, e))
-            controller_.handleEvent(e);
-    }
     const float bypassTarget = bypass_->load() >= 0.5f ? 0.0f : 1.0f;
     if (bypassTarget != 1.0f || bypassGain_ != 1.0f)
         buffer.applyGainRamp(0, 0, numSamples, bypassGain_, bypassTarget);
@@ -323,8 +307,8 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
     publishTelemetry(*engine);
     if (runaways > 0)
         runawayResets_.fetch_add(runaways, std::memory_order_relaxed);
-    if (nonFinite > 0)
-        nonFiniteSamples_.fetch_add(nonFinite, std::memory_order_relaxed);
+    if (sink.nonFinite > 0)
+        nonFiniteSamples_.fetch_add(sink.nonFinite, std::memory_order_relaxed);
 }
 
 void RosinProcessor::collectBodyResponse() noexcept
@@ -368,10 +352,10 @@ void RosinProcessor::publishTelemetry(const Engine& engine) noexcept
     for (int s = 0; s < strings; ++s)
     {
         const auto k = static_cast<std::size_t>(s);
-        const physics::BowInput& in = inputs_[k];
-        const physics::VoiceSample& out = outputs_[k];
+        const physics::BowInput& in = performer_.input(s);
+        const physics::VoiceSample& out = performer_.output(s);
         StringReadout r;
-        const lab::LiveRegimeMeter& meter = detectors_[k];
+        const lab::LiveRegimeMeter& meter = performer_.meter(s);
         r.regime = meter.regime();
         r.flybacksPerPeriod = meter.flybacksPerPeriod();
         r.slipsPerPeriod = meter.slipsPerPeriod();

@@ -1,6 +1,7 @@
 #pragma once
-// Rosin's AudioProcessor: MIDI and host parameters -> MidiGestureController -> BowedInstrument, sample by
-// sample. Shared by the plugin formats, `rosin render --midi` and the tests (library rosin_plugin_core).
+// Rosin's AudioProcessor: the host's side of performer::Performer (MIDI and host parameters -> gesture ->
+// BowedInstrument, sample by sample), with programs, state, engine builds, the output stage and telemetry.
+// Shared by the plugin formats, `rosin render --midi` and the tests (library rosin_plugin_core).
 //
 // Audio thread (processBlock): no allocation, lock or system call. Parameters are read once per block into a
 // plain snapshot (direct atomic pointers); MIDI is applied at its sample offset, so the output does not
@@ -23,9 +24,7 @@
 #include "KeyboardQueue.h"
 #include "PluginParameters.h"
 #include "StringTelemetry.h"
-#include "gesture/IntonationEar.h"
-#include "gesture/MidiGestureController.h"
-#include "lab/LiveRegimeMeter.h"
+#include "performer/Performer.h"
 
 namespace rosin::plugin
 {
@@ -112,10 +111,7 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     EngineSlot slot_;
 
     // Audio thread state.
-    gesture::MidiGestureController controller_;
-    long controllerSerial_ = -1;
-    std::array<physics::BowInput, gesture::MidiGestureController::kMaxStrings> inputs_{};
-    std::array<physics::VoiceSample, gesture::MidiGestureController::kMaxStrings> outputs_{};
+    performer::Performer performer_;
     OutputStage output_;
     std::atomic<float>* bypass_ = nullptr;
     float bypassGain_ = 1.0f; ///< the gain the last block ended at (0 bypassed, 1 playing)
@@ -125,8 +121,6 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     std::atomic<int> timerCallbacksRunning_{0};
     std::atomic<int> runawayResets_{0};
     std::atomic<int> nonFiniteSamples_{0};
-    std::array<lab::LiveRegimeMeter, gesture::MidiGestureController::kMaxStrings> detectors_{};
-    std::array<gesture::IntonationEar, gesture::MidiGestureController::kMaxStrings> ears_{};
     Telemetry telemetry_;
     void publishTelemetry(const Engine& engine) noexcept;
     /// Before prepareToPlay: the lanes and diagram show the current instrument's strings at rest.
@@ -137,8 +131,6 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     BodyResponseSetting bodyResponse_{responseHandoff_};
     /// Audio thread (or prepareToPlay): a response loaded or cleared since goes to the output stage.
     void collectBodyResponse() noexcept;
-    /// The gesture controller and the ears for the engine's strings (fixed-size state: no allocation).
-    void prepareGesture(const Engine& engine);
 };
 
 } // namespace rosin::plugin
