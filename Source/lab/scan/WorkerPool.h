@@ -4,17 +4,13 @@
 // the split varies from run to run, but every cell is computed independently and deterministically: the rows
 // do not depend on it. Finished rows are handed to the owning thread through take(), which is where they are
 // written, counted and (MPI) sent.
-#include <atomic>
 #include <chrono>
-#include <condition_variable>
 #include <cstddef>
-#include <exception>
 #include <functional>
-#include <mutex>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "JobPool.h"
 #include "ScanSpec.h"
 
 namespace rosin::scan
@@ -26,35 +22,22 @@ struct FinishedCell
     std::string row; ///< formatted, without newline
 };
 
+/// rosin scan's cells on the lab's JobPool, one CellRunner per thread.
 class WorkerPool
 {
   public:
     /// Starts min(threads, cells) threads (at least one if there are cells). `spec` must outlive the pool.
     WorkerPool(const ScanSpec& spec, std::vector<std::size_t> cells, unsigned threads);
-    /// Stops taking new cells and waits for the running ones.
-    ~WorkerPool();
-    WorkerPool(const WorkerPool&) = delete;
-    WorkerPool& operator=(const WorkerPool&) = delete;
 
     /// Rows finished since the last call, waiting up to `wait` for the first. Rethrows a worker's exception.
     std::vector<FinishedCell> take(std::chrono::milliseconds wait);
     /// No new cells are started; running ones finish and are still reported.
-    void stop() noexcept { stopping_ = true; }
+    void stop() noexcept { pool_.stop(); }
     /// Every thread has exited and every row has been taken. Rethrows a worker's exception.
-    bool finished();
+    bool finished() { return pool_.finished(); }
 
   private:
-    void work(const ScanSpec& spec);
-
-    std::vector<std::size_t> cells_; ///< in order, so that cells of one beta come together
-    std::atomic<std::size_t> next_{0};
-    std::atomic<bool> stopping_{false};
-    std::mutex mutex_;
-    std::condition_variable ready_;
-    std::vector<FinishedCell> done_;
-    std::exception_ptr error_;
-    std::size_t running_ = 0;
-    std::vector<std::thread> threads_;
+    JobPool<std::string> pool_; ///< a cell's formatted row, without newline
 };
 
 /// Takes rows until the pool has finished, on the calling thread: each row goes to `sink`; between waits of
