@@ -8,7 +8,7 @@
 #include <functional>
 #include <vector>
 
-#include "lab/scan/JobPool.h"
+#include "scan/JobPool.h"
 
 namespace rosin::discovery
 {

@@ -1,6 +1,6 @@
 #include "SimulationModel.h"
 
-#include "lab/scan/ModelSpec.h"
+#include "scan/ModelSpec.h"
 
 namespace rosin::discovery
 {

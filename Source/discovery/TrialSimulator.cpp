@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "lab/scan/TrialProtocol.h"
+#include "scan/TrialProtocol.h"
 
 namespace rosin::discovery
 {

@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <vector>
 
+#include "cli/WavWriter.h"
 #include "config/AtomicFile.h"
 #include "config/ConfigError.h"
 #include "config/TempFiles.h"
-#include "render/WavWriter.h"
 
 namespace
 {

@@ -19,9 +19,9 @@
 #include "config/TempFiles.h"
 #include "discovery/DatasetReader.h"
 #include "discovery/EffectCatalog.h"
+#include "discovery/io/TrialSignals.h"
 #include "lab/FirstSlip.h"
-#include "lab/scan/Axis.h"
-#include "render/dataset/TrialSignals.h"
+#include "scan/Axis.h"
 
 namespace
 {

@@ -12,7 +12,7 @@
 #include "discovery/TrialSimulator.h"
 #include "discovery/synth/SynthPlan.h"
 #include "discovery/synth/SynthRun.h"
-#include "lab/scan/Axis.h"
+#include "scan/Axis.h"
 
 using namespace rosin::discovery;
 

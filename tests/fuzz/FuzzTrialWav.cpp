@@ -6,7 +6,7 @@
 #include <unistd.h>
 
 #include "FuzzTarget.h"
-#include "render/dataset/TrialSignals.h"
+#include "discovery/io/TrialSignals.h"
 
 namespace
 {

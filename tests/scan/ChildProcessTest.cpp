@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "lab/scan/ChildProcess.h"
+#include "scan/ChildProcess.h"
 
 namespace fs = std::filesystem;
 using namespace rosin::scan;

@@ -4,7 +4,7 @@
 
 #include <limits>
 
-#include "lab/scan/CsvRow.h"
+#include "scan/CsvRow.h"
 
 using namespace rosin::scan;
 using rosin::lab::Regime;

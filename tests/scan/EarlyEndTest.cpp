@@ -12,9 +12,9 @@
 
 #include <cstdio>
 
-#include "lab/scan/Axis.h"
-#include "lab/scan/CellRunner.h"
-#include "lab/scan/CsvRow.h"
+#include "scan/Axis.h"
+#include "scan/CellRunner.h"
+#include "scan/CsvRow.h"
 
 using namespace rosin::scan;
 

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "lab/scan/Axis.h"
-#include "lab/scan/ScanSpec.h"
+#include "scan/Axis.h"
+#include "scan/ScanSpec.h"
 
 using namespace rosin::scan;
 

@@ -18,9 +18,9 @@
 #include <nlohmann/json.hpp>
 
 #include "config/TempFiles.h"
-#include "lab/scan/CsvRow.h"
-#include "lab/scan/RunFiles.h"
-#include "lab/scan/ScanRun.h"
+#include "scan/CsvRow.h"
+#include "scan/RunFiles.h"
+#include "scan/ScanRun.h"
 
 using namespace rosin::scan;
 

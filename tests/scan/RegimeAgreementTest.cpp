@@ -9,10 +9,10 @@
 #include <string>
 
 #include "lab/RegimeClassifier.h"
-#include "lab/scan/Axis.h"
-#include "lab/scan/CellRunner.h"
-#include "lab/scan/ScanSpec.h"
-#include "lab/scan/TrialProtocol.h"
+#include "scan/Axis.h"
+#include "scan/CellRunner.h"
+#include "scan/ScanSpec.h"
+#include "scan/TrialProtocol.h"
 
 namespace rosin::scan
 {

@@ -9,11 +9,11 @@
 
 #include "SmallScan.h"
 #include "config/TempFiles.h"
-#include "lab/scan/CellRunner.h"
-#include "lab/scan/CsvRow.h"
-#include "lab/scan/Merge.h"
-#include "lab/scan/ScanError.h"
 #include "physics/modal/SimdLevel.h"
+#include "scan/CellRunner.h"
+#include "scan/CsvRow.h"
+#include "scan/Merge.h"
+#include "scan/ScanError.h"
 
 using namespace rosin::scan;
 namespace fs = std::filesystem;

@@ -29,8 +29,8 @@
 #include <nlohmann/json.hpp>
 
 #include "config/TempFiles.h"
-#include "lab/scan/RunFiles.h"
-#include "lab/scan/ScanRun.h"
+#include "scan/RunFiles.h"
+#include "scan/ScanRun.h"
 
 using namespace rosin::scan;
 

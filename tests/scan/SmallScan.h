@@ -4,10 +4,10 @@
 #include <sstream>
 #include <string>
 
-#include "lab/scan/Axis.h"
-#include "lab/scan/RunFiles.h"
-#include "lab/scan/ScanRun.h"
-#include "lab/scan/ScanSpec.h"
+#include "scan/Axis.h"
+#include "scan/RunFiles.h"
+#include "scan/ScanRun.h"
+#include "scan/ScanSpec.h"
 
 namespace rosin::scan::test
 {

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "config/ConfigError.h"
-#include "lab/scan/SpecJson.h"
-#include "lab/scan/Variations.h"
+#include "scan/SpecJson.h"
+#include "scan/Variations.h"
 
 using namespace rosin::scan;
 

@@ -19,10 +19,10 @@
 #include <vector>
 
 #include "lab/RegimeClassifier.h"
-#include "lab/scan/ModelSpec.h"
-#include "lab/scan/ScanSpec.h"
-#include "lab/scan/Theory.h"
 #include "physics/voice/BowedStringVoice.h"
+#include "scan/ModelSpec.h"
+#include "scan/ScanSpec.h"
+#include "scan/Theory.h"
 
 using namespace rosin;
 

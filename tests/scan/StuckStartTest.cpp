@@ -11,8 +11,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "lab/scan/Axis.h"
-#include "lab/scan/CellRunner.h"
+#include "scan/Axis.h"
+#include "scan/CellRunner.h"
 
 using namespace rosin::scan;
 

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "lab/scan/BoundaryFit.h"
-#include "lab/scan/Theory.h"
+#include "scan/BoundaryFit.h"
+#include "scan/Theory.h"
 
 using namespace rosin::scan;
 

@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "lab/scan/TrialEnd.h"
+#include "scan/TrialEnd.h"
 
 using namespace rosin;
 using namespace rosin::scan;

@@ -14,7 +14,7 @@
 #include "discovery/EffectCatalog.h"
 #include "discovery/SimulationModel.h"
 #include "discovery/TrialSimulator.h"
-#include "lab/scan/ScanSpec.h"
+#include "scan/ScanSpec.h"
 
 namespace rosin::discovery
 {

@@ -11,7 +11,7 @@
 
 #include "discovery/DatasetFixtures.h"
 #include "discovery/DatasetReader.h"
-#include "render/dataset/TrialSignals.h"
+#include "discovery/io/TrialSignals.h"
 
 namespace rosin::discovery
 {

@@ -8,8 +8,8 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "render/dataset/TrialSignals.h"
-#include "render/dataset/WavEssentialsStream.h"
+#include "discovery/io/TrialSignals.h"
+#include "discovery/io/WavEssentialsStream.h"
 
 namespace rosin::discovery
 {

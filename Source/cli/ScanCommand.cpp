@@ -3,12 +3,12 @@
 #include "CommandLine.h"
 #include "ScanCompareCommand.h"
 #include "ScanOptions.h"
-#include "lab/scan/Merge.h"
-#include "lab/scan/ScanRun.h"
-#include "lab/scan/StopSignal.h"
-#include "lab/scan/WorkerPool.h"
+#include "scan/Merge.h"
+#include "scan/ScanRun.h"
+#include "scan/StopSignal.h"
+#include "scan/WorkerPool.h"
 #ifdef ROSIN_WITH_MPI
-#include "lab/scan/mpi/MpiScan.h"
+#include "scan/mpi/MpiScan.h"
 #endif
 
 namespace rosin::cli

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <ostream>
 
-#include "lab/scan/ScanRun.h"
+#include "scan/ScanRun.h"
 
 namespace rosin::scan
 {

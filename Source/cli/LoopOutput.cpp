@@ -5,7 +5,7 @@
 #include "CommandLine.h"
 #include "config/AtomicFile.h"
 #include "config/ConfigError.h"
-#include "lab/scan/Figures.h"
+#include "scan/Figures.h"
 
 namespace rosin::cli
 {

@@ -10,7 +10,7 @@
 #include "config/JsonObject.h"
 #include "config/PresetLoader.h"
 #include "gesture/GestureLimits.h"
-#include "lab/scan/ModelSpec.h"
+#include "scan/ModelSpec.h"
 
 namespace rosin::cli
 {

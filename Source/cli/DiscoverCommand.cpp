@@ -15,9 +15,9 @@
 #include "discovery/DatasetReader.h"
 #include "discovery/discover/Discovery.h"
 #include "discovery/discover/DiscoveryReport.h"
-#include "lab/scan/ChildProcess.h"
-#include "lab/scan/HelperScripts.h"
-#include "render/dataset/TrialSignals.h"
+#include "discovery/io/TrialSignals.h"
+#include "scan/ChildProcess.h"
+#include "scan/HelperScripts.h"
 
 #ifndef ROSIN_DISCOVER_FIGURE_SCRIPT
 #define ROSIN_DISCOVER_FIGURE_SCRIPT ""

@@ -10,8 +10,8 @@
 #include "WavWriter.h"
 #include "config/AtomicFile.h"
 #include "config/ConfigError.h"
-#include "lab/scan/Figures.h"
 #include "physics/rig/OscillatorRig.h"
+#include "scan/Figures.h"
 
 namespace rosin::cli
 {

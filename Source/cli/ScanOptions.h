@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "lab/scan/ScanRun.h"
-#include "lab/scan/ScanSpec.h"
+#include "scan/ScanRun.h"
+#include "scan/ScanSpec.h"
 
 namespace rosin::cli
 {

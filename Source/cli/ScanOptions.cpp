@@ -11,8 +11,8 @@
 #include "config/PresetLoader.h"
 #include "config/VoiceSetup.h"
 #include "gesture/GestureLimits.h"
-#include "lab/scan/Axis.h"
-#include "lab/scan/Variations.h"
+#include "scan/Axis.h"
+#include "scan/Variations.h"
 
 namespace rosin::cli
 {

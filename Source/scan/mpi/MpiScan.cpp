@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
-#include "lab/scan/CsvRow.h"
-#include "lab/scan/Figures.h"
-#include "lab/scan/PartialWriter.h"
-#include "lab/scan/Progress.h"
-#include "lab/scan/SpecJson.h"
-#include "lab/scan/StopSignal.h"
-#include "lab/scan/WorkerPool.h"
+#include "scan/CsvRow.h"
+#include "scan/Figures.h"
+#include "scan/PartialWriter.h"
+#include "scan/Progress.h"
+#include "scan/SpecJson.h"
+#include "scan/StopSignal.h"
+#include "scan/WorkerPool.h"
 
 namespace rosin::scan
 {

@@ -14,11 +14,11 @@
 #include "discovery/DatasetReader.h"
 #include "discovery/DatasetWriter.h"
 #include "discovery/independent/IndependentRun.h"
+#include "discovery/io/TrialSignals.h"
 #include "discovery/synth/SynthRun.h"
 #include "discovery/synth/SynthTruth.h"
 #include "gesture/GestureLimits.h"
-#include "lab/scan/StopSignal.h"
-#include "render/dataset/TrialSignals.h"
+#include "scan/StopSignal.h"
 
 namespace rosin::cli
 {

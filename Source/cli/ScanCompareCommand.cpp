@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "CommandLine.h"
-#include "lab/scan/Figures.h"
-#include "lab/scan/ScanError.h"
+#include "scan/Figures.h"
+#include "scan/ScanError.h"
 
 namespace rosin::cli
 {
