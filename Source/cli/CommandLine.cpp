@@ -1,5 +1,7 @@
 #include "CommandLine.h"
 
+#include <cstdio>
+
 #include <algorithm>
 #include <charconv>
 
@@ -62,6 +64,19 @@ double parseNumber(const std::string& option, const std::string& text)
     if (text.empty() || result.ec != std::errc() || result.ptr != last)
         throw config::ConfigError(option, "", "a number", "\"" + text + "\"");
     return value;
+}
+
+[[noreturn]] void badOptionValue(const std::string& option, const std::string& expected,
+                                 const std::string& value)
+{
+    throw config::ConfigError(option, "", expected, "\"" + value + "\"");
+}
+
+std::string significant(double value, int digits)
+{
+    char buffer[64];
+    std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
+    return buffer;
 }
 
 } // namespace rosin::cli

@@ -38,5 +38,15 @@ std::vector<Option> parseOptions(const std::vector<std::string>& args,
 
 /// Parses the whole of `text` as a number; throws ConfigError naming `option` if it is not one.
 double parseNumber(const std::string& option, const std::string& text);
+/// Throws ConfigError: `option` got `value` where `expected` was.
+[[noreturn]] void badOptionValue(const std::string& option, const std::string& expected,
+                                 const std::string& value);
+
+/// `value` with `digits` significant digits (printf's %g), for messages and reports.
+std::string significant(double value, int digits);
+
+/// The peak a listening WAV is scaled to unless --scale says otherwise: -1 dBFS, so it never clips when
+/// converted.
+inline constexpr double kListeningPeak = 0.8912509381337456;
 
 } // namespace rosin::cli

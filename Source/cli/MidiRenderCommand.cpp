@@ -104,12 +104,6 @@ MidiOptions parseMidiOptions(const std::vector<std::string>& args)
     return o;
 }
 
-std::string fixed(double value, int digits)
-{
-    char buffer[64];
-    std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
-    return buffer;
-}
 } // namespace
 
 bool isMidiRender(const std::vector<std::string>& args)
@@ -201,10 +195,10 @@ int runMidiRender(const std::vector<std::string>& args, std::ostream& out, std::
     out << "program " << o.preset << ", " << sequence.getNumEvents() << " MIDI events, "
         << (automation ? automation->lanes.size() : 0u) << " automation lane(s), block size " << o.blockSize
         << "\n";
-    out << "rendered " << fixed(seconds, 6) << " s at " << o.sampleRate << " Hz in " << fixed(wall, 3)
-        << " s (" << fixed(seconds / std::max(wall, 1e-9), 3) << " x real time); peak "
-        << fixed(result.peak, 6) << " (" << fixed(20.0 * std::log10(std::max(1e-12f, result.peak)), 4)
-        << " dBFS)\n";
+    out << "rendered " << significant(seconds, 6) << " s at " << o.sampleRate << " Hz in "
+        << significant(wall, 3) << " s (" << significant(seconds / std::max(wall, 1e-9), 3)
+        << " x real time); peak " << significant(result.peak, 6) << " ("
+        << significant(20.0 * std::log10(std::max(1e-12f, result.peak)), 4) << " dBFS)\n";
     out << "wrote " << o.out << ": 1 channel, 32-bit float\n";
     if (result.runawayResets > 0 || result.nonFiniteSamples > 0)
         err << "warning: " << result.runawayResets << " runaway voice reset(s), " << result.nonFiniteSamples

@@ -33,7 +33,6 @@ namespace
 constexpr gesture::Range kSampleRate{8000.0, 384000.0, "Hz"};
 constexpr gesture::Range kScale{0.0, 1e9, "per unit of the --output quantity", true};
 constexpr double kDefaultSampleRate = 48000.0;
-constexpr double kPeakTarget = 0.8912509381337456; // -1 dBFS: the listening file never clips when converted
 const char* const kDefaultOut = "rosin-render.wav";
 
 struct RenderOptions
@@ -177,12 +176,6 @@ std::string wrap(const std::string& text, std::size_t indent, std::size_t width)
     return result + line + "\n";
 }
 
-std::string fixed(double value, int digits)
-{
-    char buffer[64];
-    std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
-    return buffer;
-}
 } // namespace
 
 std::string renderHelp()
@@ -315,7 +308,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
         << ", body " << preset.body << ", friction " << preset.friction << ", contact " << preset.contact
         << "\n";
     out << "gesture " << o.gesture << ": " << script.segments.size() << " segment(s), " << bow.totalSamples()
-        << " samples at " << o.sampleRate << " Hz (" << fixed(script.totalSeconds(), 6) << " s)\n";
+        << " samples at " << o.sampleRate << " Hz (" << significant(script.totalSeconds(), 6) << " s)\n";
 
     ListeningOutput listening(outputQuantityFromName(o.output.value_or("radiated")), preset, o.sampleRate);
     WavWriter audioFile(o.out, o.sampleRate, 1, "rosin " + listening.describe() + ", scaled for listening");
@@ -358,7 +351,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
     float peak = 0.0f;
     for (float x : bridge)
         peak = std::max(peak, std::abs(x));
-    const double scale = o.scale ? *o.scale : (peak > 0.0f ? kPeakTarget / peak : 1.0);
+    const double scale = o.scale ? *o.scale : (peak > 0.0f ? kListeningPeak / peak : 1.0);
     for (float& x : bridge)
         x = static_cast<float>(x * scale);
     const float* channel = bridge.data();
@@ -367,13 +360,14 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
     if (probeFile)
         probeFile->close();
 
-    out << "rendered in " << fixed(wall, 3) << " s ("
-        << fixed(script.totalSeconds() / std::max(wall, 1e-9), 3) << " x real time); peak bridge force "
-        << fixed(stats.peakBridgeForce, 6) << " N";
+    out << "rendered in " << significant(wall, 3) << " s ("
+        << significant(script.totalSeconds() / std::max(wall, 1e-9), 3) << " x real time); peak bridge force "
+        << significant(stats.peakBridgeForce, 6) << " N";
     if (stats.maxContactTemperature > 0.0)
-        out << ", peak contact temperature " << fixed(stats.maxContactTemperature, 4) << " K above ambient";
+        out << ", peak contact temperature " << significant(stats.maxContactTemperature, 4)
+            << " K above ambient";
     out << "\n";
-    out << "wrote " << o.out << ": " << listening.describe() << " x " << fixed(scale, 8) << " /"
+    out << "wrote " << o.out << ": " << listening.describe() << " x " << significant(scale, 8) << " /"
         << listening.unit() << " (" << (o.scale ? "scale from --scale" : "peak normalised to -1 dBFS")
         << "), 1 channel, 32-bit float\n";
     if (probeFile)

@@ -1,5 +1,6 @@
 // `rosin render` for seed 000's oscillator rig (RigRender.h).
 #include "RigRender.h"
+#include "CommandLine.h"
 
 #include <algorithm>
 #include <array>
@@ -18,7 +19,6 @@ namespace rosin::cli
 
 namespace
 {
-constexpr double kPeakTarget = 0.8912509381337456; // -1 dBFS, as for the string
 
 struct RigChannel
 {
@@ -42,13 +42,6 @@ struct LoopRow
 {
     double time, slidingSpeed, frictionForce, normalForce, contactTemperature;
 };
-
-std::string fixed(double value, int digits)
-{
-    char buffer[64];
-    std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
-    return buffer;
-}
 
 // Writes the loop's samples; the friction coefficient mu = f / N is what seed 000 Figs. 2c and 6 plot.
 void writeLoopCsv(const std::vector<LoopRow>& rows, const std::string& path)
@@ -84,7 +77,8 @@ void drawLoop(const std::string& csv, const std::string& figure, const std::stri
 
 std::string rigSteadyGesture(const config::RigPreset& rig)
 {
-    return "steady:speed=" + fixed(rig.rodSpeed, 9) + ",force=" + fixed(rig.normalForce, 9) + ",seconds=1";
+    return "steady:speed=" + significant(rig.rodSpeed, 9) + ",force=" + significant(rig.normalForce, 9) +
+           ",seconds=1";
 }
 
 std::string rigRenderHelp()
@@ -119,11 +113,12 @@ int renderRig(const config::Preset& preset, const config::VoiceSetup& setup, ges
         throw config::ConfigError(preset.source, "rig", "a valid oscillator rig", e.what());
     }
     const auto& p = rigPreset.oscillator;
-    out << "preset " << preset.name << " (" << preset.source << "): oscillator rig " << fixed(p.frequency, 6)
-        << " Hz, Q " << fixed(p.qualityFactor, 6) << ", modal mass " << fixed(p.modalMass, 6)
-        << " kg, friction " << preset.friction << ", contact " << preset.contact << "\n";
+    out << "preset " << preset.name << " (" << preset.source << "): oscillator rig "
+        << significant(p.frequency, 6) << " Hz, Q " << significant(p.qualityFactor, 6) << ", modal mass "
+        << significant(p.modalMass, 6) << " kg, friction " << preset.friction << ", contact "
+        << preset.contact << "\n";
     out << "gesture " << request.gesture << ": " << bow.totalSamples() << " samples at " << request.sampleRate
-        << " Hz (" << fixed(gestureSeconds, 6) << " s)\n";
+        << " Hz (" << significant(gestureSeconds, 6) << " s)\n";
 
     double loopFrom = 0.0, loopTo = 0.0;
     if (request.loop)
@@ -169,16 +164,16 @@ int renderRig(const config::Preset& preset, const config::VoiceSetup& setup, ges
             probe[c].push_back(static_cast<float>(values[c]));
     }
 
-    const double scale = request.scale ? *request.scale : (peak > 0.0 ? kPeakTarget / peak : 1.0);
+    const double scale = request.scale ? *request.scale : (peak > 0.0 ? kListeningPeak / peak : 1.0);
     for (float& x : audio)
         x = static_cast<float>(x * scale);
     const float* channel = audio.data();
     audioFile.write(&channel, static_cast<int>(audio.size()));
     audioFile.close();
-    out << "peak clamp force " << fixed(peak, 6) << " N";
+    out << "peak clamp force " << significant(peak, 6) << " N";
     if (hottest > 0.0)
-        out << ", peak contact temperature " << fixed(hottest, 4) << " K above ambient";
-    out << "\nwrote " << request.out << ": clamp force x " << fixed(scale, 8) << " /N ("
+        out << ", peak contact temperature " << significant(hottest, 4) << " K above ambient";
+    out << "\nwrote " << request.out << ": clamp force x " << significant(scale, 8) << " /N ("
         << (request.scale ? "scale from --scale" : "peak normalised to -1 dBFS")
         << "), 1 channel, 32-bit float\n";
     if (probeFile)

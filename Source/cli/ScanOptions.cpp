@@ -43,16 +43,11 @@ const std::vector<std::string> kFlags = {
     "--help",         "-h",           "--mpi",          "--no-figures", "--no-progress", "--finger-damping",
     "--rigid-bridge", "--no-torsion", "--no-stiffness", "--full-trials"};
 
-[[noreturn]] void bad(const std::string& option, const std::string& expected, const std::string& value)
-{
-    throw ConfigError(option, "", expected, "\"" + value + "\"");
-}
-
 double number(const std::string& option, const std::string& text, const Range& range)
 {
     const double v = parseNumber(option, text);
     if (!range.contains(v))
-        bad(option, range.describe(), text);
+        badOptionValue(option, range.describe(), text);
     return v;
 }
 
@@ -64,7 +59,7 @@ std::size_t integer(const std::string& option, const std::string& text, std::siz
     const char* last = text.data() + text.size();
     const auto r = std::from_chars(text.data(), last, v);
     if (text.empty() || r.ec != std::errc() || r.ptr != last || v < lo || v > hi)
-        bad(option, expected, whole.empty() ? text : whole);
+        badOptionValue(option, expected, whole.empty() ? text : whole);
     return v;
 }
 
@@ -78,7 +73,7 @@ Interval interval(const std::string& option, const std::string& text, const Rang
     const auto colon = text.find(':');
     const std::string expected = "FIRST:LAST, FIRST < LAST, each " + range.describe();
     if (colon == std::string::npos)
-        bad(option, expected, text);
+        badOptionValue(option, expected, text);
     Interval i;
     try
     {
@@ -86,10 +81,10 @@ Interval interval(const std::string& option, const std::string& text, const Rang
     }
     catch (const ConfigError&)
     {
-        bad(option, expected, text);
+        badOptionValue(option, expected, text);
     }
     if (!(i.first < i.last))
-        bad(option, expected, text);
+        badOptionValue(option, expected, text);
     return i;
 }
 
@@ -103,12 +98,12 @@ std::vector<double> betaList(const std::string& option, const std::string& text)
         const std::string item = text.substr(begin, comma - begin);
         const double v = parseNumber(option, item);
         if (!kBeta.contains(v))
-            bad(option, "comma-separated betas, each " + kBeta.describe(), text);
+            badOptionValue(option, "comma-separated betas, each " + kBeta.describe(), text);
         betas.push_back(v);
         begin = comma + 1;
     }
     if (betas.size() > kMaxGridSide)
-        bad(option, "at most " + std::to_string(kMaxGridSide) + " betas", text);
+        badOptionValue(option, "at most " + std::to_string(kMaxGridSide) + " betas", text);
     return betas;
 }
 
@@ -136,7 +131,7 @@ scan::ShardId shard(const std::string& option, const std::string& text)
     const std::string expected = "K/N with N >= 1 and K in 0..N-1 (e.g. 0/4)";
     const auto slash = text.find('/');
     if (slash == std::string::npos)
-        bad(option, expected, text);
+        badOptionValue(option, expected, text);
     const std::size_t n = integer(option, text.substr(slash + 1), 1, 1000000, expected, text);
     const std::size_t k = integer(option, text.substr(0, slash), 0, n - 1, expected, text);
     return {k, n};
@@ -146,7 +141,7 @@ void requireChoice(const std::string& option, const std::string& value,
                    const std::vector<std::string>& allowed)
 {
     if (std::find(allowed.begin(), allowed.end(), value) == allowed.end())
-        bad(option, config::oneOfText(allowed), value);
+        badOptionValue(option, config::oneOfText(allowed), value);
 }
 
 // The option values by name (the last one wins, as for `rosin render`).
@@ -246,13 +241,14 @@ void trial(const Values& v, scan::ScanSpec& s)
     if (v.has("--full-trials"))
     {
         if (s.kind != ScanKind::Guettler)
-            bad("--full-trials", "a guettler scan (schelleng trials always run whole)", "schelleng");
+            badOptionValue("--full-trials", "a guettler scan (schelleng trials always run whole)",
+                           "schelleng");
         s.trialEnd = scan::GuettlerTrialEnd::Whole;
     }
     if (const auto* c = v.get("--classify"))
     {
         if (*c != "state" && *c != "bridge-force")
-            bad("--classify", "state or bridge-force", *c);
+            badOptionValue("--classify", "state or bridge-force", *c);
         s.classification =
             *c == "bridge-force" ? scan::Classification::BridgeForce : scan::Classification::State;
         if (s.classification == scan::Classification::BridgeForce &&
@@ -260,14 +256,15 @@ void trial(const Values& v, scan::ScanSpec& s)
             s.trialEnd = scan::GuettlerTrialEnd::AfterWindow;
     }
     if (s.kind == ScanKind::Schelleng && !(s.rampSeconds < s.trialSeconds))
-        bad("--ramp",
-            "a ramp shorter than the trial (--duration " + gesture::formatNumber(s.trialSeconds) + " s)",
-            gesture::formatNumber(s.rampSeconds));
+        badOptionValue("--ramp",
+                       "a ramp shorter than the trial (--duration " + gesture::formatNumber(s.trialSeconds) +
+                           " s)",
+                       gesture::formatNumber(s.rampSeconds));
     if (const auto* rate = v.get("--sample-rate"))
     {
         s.sampleRate = number("--sample-rate", *rate, kSampleRate);
         if (s.sampleRate != std::floor(s.sampleRate))
-            bad("--sample-rate", "an integer in 8000..384000 (Hz)", *rate);
+            badOptionValue("--sample-rate", "an integer in 8000..384000 (Hz)", *rate);
     }
 }
 
@@ -334,7 +331,7 @@ ScanCommandLine parseScanCommandLine(const std::vector<std::string>& args)
     if (out == nullptr)
         throw UsageError("--out DIR is required (the folder for scan.csv, scan.json and the figures)");
     if (out->empty())
-        bad("--out", "a folder name", *out);
+        badOptionValue("--out", "a folder name", *out);
     c.out = *out;
     return c;
 }

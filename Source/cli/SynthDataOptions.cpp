@@ -28,11 +28,6 @@ const std::vector<std::string> kGridOptions = {
     "--beta",     "--grid",        "--force-range", "--acceleration-range", "--bow-speed", "--beta-range",
     "--duration", "--sample-rate", "--threads"};
 
-[[noreturn]] void bad(const std::string& option, const std::string& expected, const std::string& value)
-{
-    throw ConfigError(option, "", expected, "\"" + value + "\"");
-}
-
 bool contains(const std::vector<std::string>& list, const std::string& value)
 {
     return std::find(list.begin(), list.end(), value) != list.end();
@@ -75,7 +70,7 @@ void parameterValue(const Effect& effect, const std::string& item, const std::st
             : effect.name + " parameters as NAME=VALUE, NAME " + config::oneOfText(names);
     const auto it = std::find(names.begin(), names.end(), item.substr(0, eq));
     if (eq == std::string::npos || it == names.end())
-        bad("--effect", expected, whole);
+        badOptionValue("--effect", expected, whole);
     const std::size_t index = static_cast<std::size_t>(it - names.begin());
     const auto& p = effect.parameters[index];
     const std::string text = item.substr(eq + 1);
@@ -84,17 +79,17 @@ void parameterValue(const Effect& effect, const std::string& item, const std::st
     {
         const auto choice = std::find(p.choices.begin(), p.choices.end(), text);
         if (choice == p.choices.end())
-            bad("--effect", p.name + " " + config::oneOfText(p.choices), whole);
+            badOptionValue("--effect", p.name + " " + config::oneOfText(p.choices), whole);
         v = static_cast<double>(choice - p.choices.begin());
     }
     else
     {
         v = parseNumber("--effect", text);
         if (!(v >= p.min && v <= p.max))
-            bad("--effect",
-                p.name + " in " + gesture::formatNumber(p.min) + ".." + gesture::formatNumber(p.max) +
-                    (p.unit.empty() ? "" : " (" + p.unit + ")"),
-                whole);
+            badOptionValue("--effect",
+                           p.name + " in " + gesture::formatNumber(p.min) + ".." +
+                               gesture::formatNumber(p.max) + (p.unit.empty() ? "" : " (" + p.unit + ")"),
+                           whole);
     }
     request.fixed[index] = v;
 }
@@ -105,7 +100,7 @@ EffectRequest effectRequest(const std::string& text)
     const auto colon = text.find(':');
     const Effect* effect = discovery::findEffect(text.substr(0, colon));
     if (effect == nullptr)
-        bad("--effect", effectChoices(), text);
+        badOptionValue("--effect", effectChoices(), text);
     EffectRequest request{effect, std::vector<std::optional<double>>(effect->parameters.size())};
     if (colon == std::string::npos)
         return request;
@@ -126,7 +121,7 @@ std::vector<EffectRequest> effects(const std::vector<std::string>& texts)
         throw UsageError("--effect NAME|none is required (" + effectChoices() +
                          "; repeat it to hide several)");
     if (texts.size() > 1 && contains(texts, "none"))
-        bad("--effect", "none alone, or one or more effects", "none");
+        badOptionValue("--effect", "none alone, or one or more effects", "none");
     if (texts.front() == "none")
         return {};
     std::vector<EffectRequest> requests;
@@ -147,7 +142,8 @@ std::uint64_t seed(const std::string& text)
     const char* end = text.data() + text.size();
     const auto r = std::from_chars(text.data(), end, v);
     if (text.empty() || r.ec != std::errc() || r.ptr != end)
-        bad("--seed", "an integer in 0.." + std::to_string(std::numeric_limits<std::uint64_t>::max()), text);
+        badOptionValue("--seed",
+                       "an integer in 0.." + std::to_string(std::numeric_limits<std::uint64_t>::max()), text);
     return v;
 }
 
@@ -185,7 +181,7 @@ SynthDataCommandLine parseSynthDataCommandLine(const std::vector<std::string>& a
     if (!kind)
         throw UsageError("--scan guettler|schelleng is required");
     if (*kind != "guettler" && *kind != "schelleng")
-        bad("--scan", "one of guettler, schelleng", *kind);
+        badOptionValue("--scan", "one of guettler, schelleng", *kind);
     auto& s = c.settings;
     s.effects = effects(values(options, "--effect"));
 
@@ -193,8 +189,8 @@ SynthDataCommandLine parseSynthDataCommandLine(const std::vector<std::string>& a
     s.scan = grid.spec;
     c.threads = grid.run.threads;
     if (s.scan.trialSeconds < kSynthMinDuration)
-        bad("--duration", "at least " + gesture::formatNumber(kSynthMinDuration) + " s",
-            gesture::formatNumber(s.scan.trialSeconds));
+        badOptionValue("--duration", "at least " + gesture::formatNumber(kSynthMinDuration) + " s",
+                       gesture::formatNumber(s.scan.trialSeconds));
     s.preset =
         last(options, "--preset") ? config::loadPreset(*last(options, "--preset")) : config::defaultPreset();
     s.scan.model = scan::modelFromPreset(s.preset);
@@ -206,24 +202,24 @@ SynthDataCommandLine parseSynthDataCommandLine(const std::vector<std::string>& a
     if (const auto channels = last(options, "--channels"))
     {
         if (*channels != "basic" && *channels != "all")
-            bad("--channels", "one of basic, all", *channels);
+            badOptionValue("--channels", "one of basic, all", *channels);
         s.allChannels = *channels == "all";
     }
     if (const auto generator = last(options, "--generator"))
     {
         if (*generator != "rosin" && *generator != "independent")
-            bad("--generator", "one of rosin, independent", *generator);
+            badOptionValue("--generator", "one of rosin, independent", *generator);
         c.generator = *generator;
     }
     const auto out = last(options, "--out");
     if (!out)
         throw UsageError("--out DIR is required (the dataset folder)");
     if (out->empty())
-        bad("--out", "a folder name", *out);
+        badOptionValue("--out", "a folder name", *out);
     c.out = *out;
     c.truth = last(options, "--truth");
     if (c.truth && c.truth->empty())
-        bad("--truth", "a file name", *c.truth);
+        badOptionValue("--truth", "a file name", *c.truth);
     return c;
 }
 

@@ -9,7 +9,7 @@ namespace rosin::plugin
 
 namespace
 {
-const char* const kRoman[] = {"", "I", "II", "III", "IV", "V", "VI", "VII", "VIII"};
+const char* const kRomanFromOne[] = {"", "I", "II", "III", "IV", "V", "VI", "VII", "VIII"};
 // Temperature bar scale: the thermal laws' contact rises stay below about 100 K when played.
 constexpr float kTemperatureFullScale = 100.0f;
 
@@ -63,7 +63,7 @@ void StringLane::paint(juce::Graphics& g)
     if (!present_)
     {
         g.setColour(text.withAlpha(0.3f));
-        g.drawText(juce::String(kRoman[roman_]) + "  (no string)", bounds.reduced(10.0f, 0.0f),
+        g.drawText(juce::String(kRomanFromOne[roman_]) + "  (no string)", bounds.reduced(10.0f, 0.0f),
                    juce::Justification::centredLeft);
         return;
     }
@@ -75,7 +75,8 @@ void StringLane::paint(juce::Graphics& g)
     auto id = area.removeFromLeft(84.0f);
     g.setColour(text.withAlpha(dim));
     g.setFont(juce::Font(20.0f, juce::Font::bold));
-    g.drawText(kRoman[roman_], id.removeFromTop(id.getHeight() * 0.55f), juce::Justification::centredLeft);
+    g.drawText(kRomanFromOne[roman_], id.removeFromTop(id.getHeight() * 0.55f),
+               juce::Justification::centredLeft);
     g.setFont(juce::Font(12.5f));
     const bool open = std::abs(r.frequency / juce::jmax(1.0f, r.openFrequency) - 1.0f) < 0.01f;
     g.drawText(open ? noteName(r.openFrequency) + " open"
