@@ -8,7 +8,7 @@ namespace rosin::physics
 {
 namespace
 {
-constexpr double kTwoPiRadiation = 2.0 * std::numbers::pi;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
 } // namespace
 
 double statisticalRadiationEfficiency(const BodyRadiation& radiation, double frequencyHz) noexcept
@@ -30,24 +30,24 @@ double pressurePerAcceleration(const BodyMode& mode, const BodyRadiation& radiat
                                std::sqrt(D * mode.radiationEfficiency * mode.effectiveMass /
                                          (4.0 * std::numbers::pi * radiation.surfaceDensity));
     const double compactness = std::hypot(1.0, mode.frequency / radiation.unityEfficiencyHz);
-    return mode.radiationSign * perVelocity * compactness / (kTwoPiRadiation * mode.frequency);
+    return mode.radiationSign * perVelocity * compactness / (kTwoPi * mode.frequency);
 }
 
 double radiatedShare(const BodyMode& mode, const BodyRadiation& radiation) noexcept
 {
     const double etaRadiated = kAirDensity * kSpeedOfSound * mode.radiationEfficiency /
-                               (radiation.surfaceDensity * kTwoPiRadiation * mode.frequency);
+                               (radiation.surfaceDensity * kTwoPi * mode.frequency);
     return etaRadiated * mode.q;
 }
 
 std::complex<double> radiativity(const BodyParameters& body, double frequencyHz)
 {
-    const double w = kTwoPiRadiation * frequencyHz;
+    const double w = kTwoPi * frequencyHz;
     const std::complex<double> iw(0.0, w);
     std::complex<double> p = 0.0;
     for (const auto& m : body.modes)
     {
-        const double wk = kTwoPiRadiation * m.frequency;
+        const double wk = kTwoPi * m.frequency;
         const std::complex<double> Yk =
             iw / (m.effectiveMass * std::complex<double>(wk * wk - w * w, w * wk / m.q));
         p += pressurePerAcceleration(m, body.radiation) * iw * Yk;
