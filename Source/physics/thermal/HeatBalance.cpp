@@ -31,6 +31,7 @@ void HeatBalance::prepare(const ContactGeometry& geometry, const ContactMaterial
     stationary_.prepare(geometry.radius, materials.stationary, dt_);
     moving_.prepare(geometry.radius, materials.moving, dt_);
     forceTerms_ = {}; // new geometry, materials or time step
+    localSpeed_ = localForce_ = std::numeric_limits<double>::quiet_NaN();
     reset();
 }
 
@@ -62,18 +63,22 @@ const HeatBalance::ForceTerms& HeatBalance::forceTerms(double bowForce) const no
     return t;
 }
 
-HeatBalance::Local HeatBalance::local(double slidingSpeed, double bowForce) const noexcept
+const HeatBalance::Local& HeatBalance::local(double slidingSpeed, double bowForce) const noexcept
 {
+    if (slidingSpeed == localSpeed_ && bowForce == localForce_)
+        return local_;
     const ForceTerms& t = forceTerms(bowForce);
     const double v = sanitiseNonNegative(slidingSpeed);
     const double x = v * t.washoutPerSpeed;
-    return {t.capacityRate,
-            t.advectionPerSpeed * v,
-            t.kernelScale,
-            t.invStationaryG0,
-            t.invMovingG0 / washout::firstStepFactor(x),
-            washout::decay(x),
-            washout::depositFactor(x)};
+    local_ = {t.capacityRate,
+              t.advectionPerSpeed * v,
+              t.kernelScale,
+              t.invStationaryG0,
+              t.invMovingG0 / washout::firstStepFactor(x),
+              washout::decay(x),
+              washout::depositFactor(x)};
+    localSpeed_ = slidingSpeed, localForce_ = bowForce;
+    return local_;
 }
 
 // T[n] = (P + C T[n-1]/dt + H_s/g0_s + H_m/g0_m) / (C/dt + G_adv + 1/g0_s + 1/g0_m) (reference eq. 2.9 with
@@ -92,7 +97,7 @@ double HeatBalance::predict(double powerW, double slidingSpeed, double bowForce)
 
 void HeatBalance::commit(double powerW, double slidingSpeed, double bowForce) noexcept
 {
-    const Local l = local(slidingSpeed, bowForce);
+    const Local& l = local(slidingSpeed, bowForce);
     const double T = solveTemperature(sanitiseNonNegative(powerW), l);
     const double toStationary = (T - stationary_.historySum()) * l.invStationary; // W
     const double toMoving = (T - moving_.historySum()) * l.invMoving;             // W
@@ -111,7 +116,7 @@ void HeatBalance::commit(double powerW, double slidingSpeed, double bowForce) no
 
 double HeatBalance::steadyConductance(double slidingSpeed, double bowForce) const noexcept
 {
-    const Local l = local(slidingSpeed, bowForce);
+    const Local& l = local(slidingSpeed, bowForce);
     const double x = sanitiseNonNegative(slidingSpeed) * forceTerms(bowForce).washoutPerSpeed;
     const double Rs = l.kernelScale * stationary_.discreteSteadyResistance(1.0, 1.0, 1.0);
     const double Rm =

@@ -11,6 +11,8 @@
 //    exact high-Peclet conductance of a disc, 0.888 pi a^2 e sqrt(|dv| / a); the old balance used the
 //    quasi-steady pi a^2 e sqrt(3 |dv| / (8 a)) instead, 31 % lower, and only while sliding.
 // Time marching: implicit (backward Euler) layer, exact-in-time SOE histories (eq. 2.9); stable at any step.
+#include <limits>
+
 #include "ConductingSide.h"
 #include "ContactParameters.h"
 
@@ -86,7 +88,7 @@ class HeatBalance
         double deposit; ///< share of this step's moving-side deposit still under the contact at its end
     };
     const ForceTerms& forceTerms(double bowForce) const noexcept;
-    Local local(double slidingSpeed, double bowForce) const noexcept;
+    const Local& local(double slidingSpeed, double bowForce) const noexcept;
     double solveTemperature(double powerW, const Local& l) const noexcept;
 
     ContactGeometry geometry_;
@@ -96,6 +98,11 @@ class HeatBalance
     double temperature_ = 0.0;
     double stationaryFlux_ = 0.0, movingFlux_ = 0.0;
     mutable ForceTerms forceTerms_; ///< a cache: same values for the same force, so const methods may fill it
+    // local() of the last (speed, force) asked: a law's predictor asks for the previous sample's committed
+    // speed, and a sticking sample asks three times for speed 0. A cache, like forceTerms_.
+    // NaN: equal to nothing, so the first call computes.
+    mutable double localSpeed_ = std::numeric_limits<double>::quiet_NaN(), localForce_ = localSpeed_;
+    mutable Local local_{};
 };
 
 } // namespace rosin::physics
