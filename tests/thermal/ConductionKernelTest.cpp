@@ -1,6 +1,7 @@
 // Disc-average half-space Green's function (reference eq. 2.5) and its SOE fit (eq. 2.8).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -42,27 +43,49 @@ TEST(ConductionKernel, GreenFunctionShortTimeLimitIsOneDimensional)
     EXPECT_NEAR(ConductionKernel::green(t, a, K, rc) / oneD, 1.0, 2e-3);
 }
 
-TEST(ConductionKernel, SumOfExponentialsMatchesGreenFunction)
+/// Largest |SOE / G_avg - 1| on its own grid (97 points per decade, offset from the fit's collocation and
+/// from maxRelativeError's grid), against the exact kernel.
+double largestRelativeError(const ConductionKernel& k, double a, double t0, double t1)
 {
-    for (double a : {250e-6, 500e-6})
-        for (double fs : {44100.0, 48000.0, 192000.0})
+    const int n = static_cast<int>(97.0 * std::log10(t1 / t0));
+    double worst = 0.0;
+    for (int i = 0; i <= n; ++i)
+    {
+        const double t = t0 * std::pow(t1 / t0, (i + 0.37) / (n + 1.0));
+        const double exact =
+            ConductionKernel::green(t, a, kMaterial.conductivity, kMaterial.volumetricHeatCapacity);
+        worst = std::max(worst, std::abs(k.evaluate(t) / exact - 1.0));
+    }
+    return worst;
+}
+
+TEST(ConductionKernel, SumOfExponentialsMatchesGreenFunctionWithTheFewestTerms)
+{
+    for (double a : {100e-6, 250e-6, 500e-6, 1e-3})
+        for (double fs : {22050.0, 44100.0, 48000.0, 96000.0, 192000.0})
         {
             ConductionKernel k;
             k.fit(a, kMaterial.conductivity, kMaterial.volumetricHeatCapacity, 1.0 / fs);
-            const double err = k.maxRelativeError(1.0 / fs, 100.0);
+            const double err = largestRelativeError(k, a, 1.0 / fs, 100.0);
             const double integralRatio = k.integral() / discResistance(a);
             const double discreteRatio = k.discreteSteadyResistance() / discResistance(a);
+            // The fewest: the search tried every count below the one it kept, so one term less misses.
+            ConductionKernel oneLess;
+            ConductionKernel::FitOptions fewer;
+            fewer.terms = k.size() - 1;
+            oneLess.fit(a, kMaterial.conductivity, kMaterial.volumetricHeatCapacity, 1.0 / fs, fewer);
+            const double errOneLess = oneLess.maxRelativeError(1.0 / fs, 100.0);
             std::printf(
-                "[ SOE      ] a = %3.0f um, fs = %6.0f Hz: %d terms (%d zero), max rel err [dt,100 s] = "
-                "%.2e, sum c tau / (8/(3 pi^2 K a)) = %.5f, discrete steady resistance ratio = %.6f\n",
-                a * 1e6, fs, k.size(), k.zeroTerms(), err, integralRatio, discreteRatio);
-            EXPECT_LT(err, 1e-3);
+                "[ SOE      ] a = %4.0f um, fs = %6.0f Hz: %d terms, max rel err [dt,100 s] = %.2e (%d "
+                "terms: %.2e), sum c tau / (8/(3 pi^2 K a)) = %.5f, discrete steady ratio = %.6f\n",
+                a * 1e6, fs, k.size(), err, oneLess.size(), errOneLess, integralRatio, discreteRatio);
+            EXPECT_LT(err, 1e-3); // the kernel's stated accuracy (the fit aims at half of it)
+            EXPECT_GT(errOneLess, 5e-4);
             EXPECT_NEAR(integralRatio, 1.0, 0.01);
             EXPECT_NEAR(discreteRatio, 1.0, 1e-3);
-            EXPECT_GE(k.size(), 30);
-            EXPECT_LE(k.size(), 48);
+            EXPECT_LE(k.size(), 32); // 44 before the count was searched for (22-24 measured)
             for (double c : k.coefficients())
-                EXPECT_GE(c, 0.0); // non-negative fit: a positive, decaying kernel
+                EXPECT_GT(c, 0.0); // non-negative fit without idle terms: a positive, decaying kernel
         }
 }
 

@@ -144,8 +144,8 @@ namespace
 // prepare() runs off the audio thread, so a lock here is allowed; the cache is dropped when it grows large.
 struct FitKey
 {
-    double a, K, rhoC, dt, maxTime, tauBelowDt, tauAboveMax, integralWeight;
-    int terms, pointsPerDecade;
+    double a, K, rhoC, dt, maxTime, tauBelowDt, tauAboveMax, integralWeight, maxRelativeError;
+    int terms, minimumTerms, maximumTerms, pointsPerDecade;
     auto operator<=>(const FitKey&) const = default;
 };
 struct FitResult
@@ -173,7 +173,10 @@ void ConductionKernel::fit(double a, double K, double rhoC, double dt, const Fit
                      opt.tauBelowDt,
                      opt.tauAboveMax,
                      opt.integralWeight,
+                     opt.maxRelativeError,
                      opt.terms,
+                     opt.minimumTerms,
+                     opt.maximumTerms,
                      opt.pointsPerDecade};
     {
         std::lock_guard<std::mutex> lock(fitCacheMutex);
@@ -193,7 +196,21 @@ void ConductionKernel::fit(double a, double K, double rhoC, double dt, const Fit
 void ConductionKernel::fitUncached(double a, double K, double rhoC, double dt, const FitOptions& opt)
 {
     g0_ = integrateGreen(0.0, dt, a, K, rhoC);
-    const int M = std::max(opt.terms, 2);
+    if (opt.terms > 0)
+        return fitTerms(a, K, rhoC, dt, opt, opt.terms);
+    // The fewest terms that keep the accuracy: every term costs two multiply-adds per sample and solid on the
+    // audio thread, so the fit, which runs once per contact, does the searching.
+    for (int M = std::max(opt.minimumTerms, 2); M <= opt.maximumTerms; ++M)
+    {
+        fitTerms(a, K, rhoC, dt, opt, M);
+        if (maxRelativeError(dt, opt.maxTime) <= opt.maxRelativeError)
+            return;
+    }
+}
+
+void ConductionKernel::fitTerms(double a, double K, double rhoC, double dt, const FitOptions& opt, int terms)
+{
+    const int M = std::max(terms, 2);
     const double tauLo = std::log(opt.tauBelowDt * dt), tauHi = std::log(opt.tauAboveMax * opt.maxTime);
     tau_.resize(size_t(M));
     for (int k = 0; k < M; ++k)
@@ -217,7 +234,12 @@ void ConductionKernel::fitUncached(double a, double K, double rhoC, double dt, c
     b[points] = opt.integralWeight;
 
     const Eigen::VectorXd c = nonNegativeLeastSquares(A, b);
-    c_.assign(c.data(), c.data() + M);
+    c_.clear();
+    std::vector<double> usedTau;
+    for (int k = 0; k < M; ++k)
+        if (c[k] > 0.0) // NNLS leaves some exactly at zero: a term that would only cost time
+            c_.push_back(c[k]), usedTau.push_back(tau_[size_t(k)]);
+    tau_ = std::move(usedTau);
 }
 
 double ConductionKernel::evaluate(double t) const noexcept
@@ -279,11 +301,6 @@ double ConductionKernel::maxRelativeError(double t0, double t1) const noexcept
         worst = std::max(worst, std::abs(evaluate(t) / g - 1.0));
     }
     return worst;
-}
-
-int ConductionKernel::zeroTerms() const noexcept
-{
-    return static_cast<int>(std::count(c_.begin(), c_.end(), 0.0));
 }
 
 } // namespace rosin::physics

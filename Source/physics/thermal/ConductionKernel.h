@@ -14,11 +14,17 @@ class ConductionKernel
   public:
     struct FitOptions
     {
-        int terms = 44;              ///< number of exponentials M
-        double maxTime = 1e4;        ///< s, end of the fitted interval [dt, maxTime]
+        /// Number of exponentials M; 0: the fewest (from minimumTerms up) whose largest relative error on
+        /// [dt, maxTime] is at most maxRelativeError.
+        int terms = 0;
+        double maxRelativeError = 5e-4; ///< half the kernel's stated accuracy, 1e-3 (a margin for rounding)
+        int minimumTerms = 12, maximumTerms = 64;
+        /// s, end of the fitted interval [dt, maxTime]: longer than any held note. Beyond it only the
+        /// kernel's integral is kept (the steady-resistance row), not its t^-3/2 shape.
+        double maxTime = 100.0;
         int pointsPerDecade = 40;    ///< collocation density in log t
-        double tauBelowDt = 0.1;     ///< smallest tau = tauBelowDt * dt
-        double tauAboveMax = 20.0;   ///< largest tau = tauAboveMax * maxTime (carries the t^-3/2 tail)
+        double tauBelowDt = 0.3;     ///< smallest tau = tauBelowDt * dt
+        double tauAboveMax = 5.0;    ///< largest tau = tauAboveMax * maxTime (carries the t^-3/2 tail)
         double integralWeight = 1e3; ///< weight of the steady-resistance row (see fit())
     };
 
@@ -44,7 +50,8 @@ class ConductionKernel
                                  double volumetricHeatCapacity, int intervals = 4000) noexcept;
 
     /// Non-negative weighted least-squares fit (relative error, Lawson-Hanson NNLS) of the SOE to G_avg on
-    /// [dt, maxTime], log-spaced tau in [tauBelowDt dt, tauAboveMax maxTime]. One extra row asks that the
+    /// [dt, maxTime], log-spaced tau in [tauBelowDt dt, tauAboveMax maxTime], with the fewest terms that
+    /// keep FitOptions::maxRelativeError (terms NNLS leaves at zero are dropped). One extra row asks that the
     /// scheme's discrete steady resistance g0 + sum c_m tau_m exp(-dt/tau_m) equal 8/(3 pi^2 K a), so the
     /// time-stepped steady state matches eq. 2.7. Also computes the first-step weight g0 = int_0^dt G. A fit
     /// with the same inputs as an earlier one in this process is copied from it (a lock and a map look-up).
@@ -71,12 +78,12 @@ class ConductionKernel
     double discreteSteadyResistance() const noexcept;
     /// Largest |SOE/G_avg - 1| on a log grid (100 points per decade) over [t0, t1].
     double maxRelativeError(double t0, double t1) const noexcept;
-    /// Number of coefficients the fit left at exactly zero (NNLS inactive set).
-    int zeroTerms() const noexcept;
 
   private:
     void fitUncached(double radiusM, double conductivity, double volumetricHeatCapacity, double timeStepS,
                      const FitOptions& options);
+    void fitTerms(double radiusM, double conductivity, double volumetricHeatCapacity, double timeStepS,
+                  const FitOptions& options, int terms);
 
     std::vector<double> c_, tau_;
     double g0_ = 0.0, dt_ = 0.0, radius_ = 0.0, conductivity_ = 0.0, heatCapacity_ = 0.0;
