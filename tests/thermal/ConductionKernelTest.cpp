@@ -69,7 +69,7 @@ TEST(ConductionKernel, SumOfExponentialsMatchesGreenFunctionWithTheFewestTerms)
             const double err = largestRelativeError(k, a, 1.0 / fs, 100.0);
             const double integralRatio = k.integral() / discResistance(a);
             const double discreteRatio = k.discreteSteadyResistance() / discResistance(a);
-            // The fewest: the search tried every count below the one it kept, so one term less misses.
+            // The fewest: a fit with one candidate term less misses the target.
             ConductionKernel oneLess;
             ConductionKernel::FitOptions fewer;
             fewer.terms = k.size() - 1;

@@ -72,10 +72,14 @@ void BridgeBody::advance(double bridgeForce) noexcept
         pressureNow_ += lowpassCoefficient_ * (compactPressure_ - pressureNow_);
     }
     velocityNow_ = udh_ + U1_ * bridgeForce;
+    if (radiates_) // the pressure's history comes out of the same pass over the modes
+    {
+        const FourSums s = advanceOneInputFourOutputs(bank_, gainIn_.data(), bridgeForce, u_, ud_, udd_, p_);
+        uh_ = s.first, udh_ = s.second, uddh_ = s.third, ph_ = s.fourth;
+        return;
+    }
     const ThreeSums s = advanceOneInputThreeOutputs(bank_, gainIn_.data(), bridgeForce, u_, ud_, udd_);
     uh_ = s.first, udh_ = s.second, uddh_ = s.third;
-    if (radiates_)
-        ph_ = sumOutput(bank_, p_);
 }
 
 int BridgeBody::modeCount() const noexcept

@@ -28,6 +28,10 @@ struct ThreeSums
 {
     double first = 0.0, second = 0.0, third = 0.0;
 };
+struct FourSums
+{
+    double first = 0.0, second = 0.0, third = 0.0, fourth = 0.0;
+};
 
 /// x_n = gainA_n a + gainB_n b; advance; return the two output sums over the new state.
 TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const ModalReal* gainA, double a, const ModalReal* gainB,
@@ -39,7 +43,10 @@ double advanceOneInputOneOutput(ModalBank& bank, const ModalReal* gain, double a
 ThreeSums advanceOneInputThreeOutputs(ModalBank& bank, const ModalReal* gain, double a,
                                       const OutputWeights& o1, const OutputWeights& o2,
                                       const OutputWeights& o3) noexcept;
-/// Sum_n Re(o_n w_n) over the current state without advancing.
-double sumOutput(const ModalBank& bank, const OutputWeights& o) noexcept;
+/// x_n = gain_n a; advance; return four output sums over the new state (the body: displacement, velocity,
+/// acceleration and radiated pressure in one pass).
+FourSums advanceOneInputFourOutputs(ModalBank& bank, const ModalReal* gain, double a, const OutputWeights& o1,
+                                    const OutputWeights& o2, const OutputWeights& o3,
+                                    const OutputWeights& o4) noexcept;
 
 } // namespace rosin::physics

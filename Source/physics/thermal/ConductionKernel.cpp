@@ -145,7 +145,7 @@ namespace
 struct FitKey
 {
     double a, K, rhoC, dt, maxTime, tauBelowDt, tauAboveMax, integralWeight, maxRelativeError;
-    int terms, minimumTerms, maximumTerms, pointsPerDecade;
+    int terms, minimumTerms, startTerms, maximumTerms, pointsPerDecade;
     auto operator<=>(const FitKey&) const = default;
 };
 struct FitResult
@@ -176,6 +176,7 @@ void ConductionKernel::fit(double a, double K, double rhoC, double dt, const Fit
                      opt.maxRelativeError,
                      opt.terms,
                      opt.minimumTerms,
+                     opt.startTerms,
                      opt.maximumTerms,
                      opt.pointsPerDecade};
     {
@@ -199,13 +200,24 @@ void ConductionKernel::fitUncached(double a, double K, double rhoC, double dt, c
     if (opt.terms > 0)
         return fitTerms(a, K, rhoC, dt, opt, opt.terms);
     // The fewest terms that keep the accuracy: every term costs two multiply-adds per sample and solid on the
-    // audio thread, so the fit, which runs once per contact, does the searching.
-    for (int M = std::max(opt.minimumTerms, 2); M <= opt.maximumTerms; ++M)
+    // audio thread, so the fit, which runs once per contact, does the searching. It starts where audio rates
+    // and contact sizes end up (20-26) and walks down while the accuracy holds, else up until it does.
+    auto meets = [&](int M)
     {
         fitTerms(a, K, rhoC, dt, opt, M);
-        if (maxRelativeError(dt, opt.maxTime) <= opt.maxRelativeError)
-            return;
+        return maxRelativeError(dt, opt.maxTime) <= opt.maxRelativeError;
+    };
+    const int lowest = std::max(opt.minimumTerms, 2);
+    int M = std::clamp(opt.startTerms, lowest, opt.maximumTerms);
+    if (meets(M))
+    {
+        while (M > lowest && meets(M - 1))
+            --M;
+        fitTerms(a, K, rhoC, dt, opt, M); // the last fit tried may have missed
+        return;
     }
+    while (M < opt.maximumTerms && !meets(++M))
+        ;
 }
 
 void ConductionKernel::fitTerms(double a, double K, double rhoC, double dt, const FitOptions& opt, int terms)

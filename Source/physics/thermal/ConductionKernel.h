@@ -18,7 +18,7 @@ class ConductionKernel
         /// [dt, maxTime] is at most maxRelativeError.
         int terms = 0;
         double maxRelativeError = 5e-4; ///< half the kernel's stated accuracy, 1e-3 (a margin for rounding)
-        int minimumTerms = 12, maximumTerms = 64;
+        int minimumTerms = 2, startTerms = 20, maximumTerms = 64; ///< the search's bounds and first count
         /// s, end of the fitted interval [dt, maxTime]: longer than any held note. Beyond it only the
         /// kernel's integral is kept (the steady-resistance row), not its t^-3/2 shape.
         double maxTime = 100.0;
