@@ -235,3 +235,34 @@ TEST(HeatBalance, StableAndPositiveAtAnyTimeStep)
         EXPECT_TRUE(std::isfinite(heat.temperature()));
     }
 }
+
+TEST(HeatBalance, AnUnheatedContactStaysAmbientAndAHeatedOneKeepsCooling)
+{
+    // An unbowed string (no power) skips its heat steps, which would only multiply zeros; once heat has
+    // arrived every step is computed again, so the contact cools instead of freezing at its last temperature.
+    const ContactParameters contact = galluzzoContact();
+    HeatBalance heat;
+    heat.prepare(contact, 48000.0);
+    for (int k = 0; k < 480; ++k)
+        heat.commit(0.0, 0.3, 0.0);
+    EXPECT_EQ(heat.temperature(), 0.0);
+    EXPECT_EQ(heat.predict(0.0, 0.3, 0.0), 0.0);
+    EXPECT_GT(heat.predict(0.2, 0.5, 1.0), 0.0); // a prediction with power is computed, not skipped
+    for (int k = 0; k < 48; ++k)
+        heat.commit(0.2, 0.5, 1.0); // 1 ms of sliding heat
+    const double heated = heat.temperature();
+    double previous = heated;
+    bool cooling = true;
+    for (int k = 0; k < 4800; ++k)
+    {
+        heat.commit(0.0, 0.3, 0.0);
+        cooling = cooling && heat.temperature() < previous && heat.temperature() > 0.0;
+        previous = heat.temperature();
+    }
+    EXPECT_GT(heated, 1.0);
+    EXPECT_TRUE(cooling);
+    EXPECT_LT(previous, 0.5 * heated);
+    heat.reset();
+    heat.commit(0.0, 0.3, 0.0);
+    EXPECT_EQ(heat.temperature(), 0.0);
+}

@@ -41,6 +41,7 @@ void HeatBalance::reset() noexcept
     moving_.reset();
     temperature_ = 0.0;
     stationaryFlux_ = movingFlux_ = 0.0;
+    atRest_ = true;
 }
 
 const HeatBalance::ForceTerms& HeatBalance::forceTerms(double bowForce) const noexcept
@@ -92,13 +93,20 @@ double HeatBalance::solveTemperature(double powerW, const Local& l) const noexce
 
 double HeatBalance::predict(double powerW, double slidingSpeed, double bowForce) const noexcept
 {
-    return solveTemperature(sanitiseNonNegative(powerW), local(slidingSpeed, bowForce));
+    const double P = sanitiseNonNegative(powerW);
+    if (atRest_ && P == 0.0)
+        return 0.0; // what solveTemperature gives: no power, no stored heat
+    return solveTemperature(P, local(slidingSpeed, bowForce));
 }
 
 void HeatBalance::commit(double powerW, double slidingSpeed, double bowForce) noexcept
 {
+    const double P = sanitiseNonNegative(powerW);
+    if (atRest_ && P == 0.0)
+        return; // the step would leave every value at exactly zero
+    atRest_ = false;
     const Local& l = local(slidingSpeed, bowForce);
-    const double T = solveTemperature(sanitiseNonNegative(powerW), l);
+    const double T = solveTemperature(P, l);
     const double toStationary = (T - stationary_.historySum()) * l.invStationary; // W
     const double toMoving = (T - moving_.historySum()) * l.invMoving;             // W
     if (!std::isfinite(T) || !std::isfinite(toStationary) || !std::isfinite(toMoving))

@@ -97,6 +97,9 @@ class HeatBalance
     double dt_ = 1.0 / 48000.0;
     double temperature_ = 0.0;
     double stationaryFlux_ = 0.0, movingFlux_ = 0.0;
+    /// Ambient with both histories exactly zero (from reset() until heat first arrives): a step without
+    /// power would only multiply zeros, so it is skipped. An unbowed string of an instrument stays here.
+    bool atRest_ = true;
     mutable ForceTerms forceTerms_; ///< a cache: same values for the same force, so const methods may fill it
     // local() of the last (speed, force) asked: a law's predictor asks for the previous sample's committed
     // speed, and a sticking sample asks three times for speed 0. A cache, like forceTerms_.
