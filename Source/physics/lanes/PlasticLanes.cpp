@@ -92,6 +92,7 @@ void PlasticLanes::updateForces(const Lanes& bowForce) noexcept
         if (bowForce[l] == force_[l])
             continue;
         force_[l] = bowForce[l];
+        termsValid_ = false; // movingTerms() depend on the force
         const HeatBalance::ForceTerms t = law_->heat().forceTermsAt(bowForce[l]);
         capacityRate_[l] = t.capacityRate;
         advectionPerSpeed_[l] = t.advectionPerSpeed;
@@ -106,12 +107,19 @@ void PlasticLanes::updateForces(const Lanes& bowForce) noexcept
 
 void PlasticLanes::movingTerms(const Lanes& speed, Lanes& invMoving, Lanes& decay) const noexcept
 {
-    for (int l = 0; l < kLanes; ++l)
+    if (!(termsValid_ && speed == termsSpeed_))
     {
-        const double x = sanitiseNonNegative(speed[l]) * washoutPerSpeed_[l];
-        invMoving[l] = invMovingG0_[l] / washout::firstStepFactor(x);
-        decay[l] = washout::decay(x);
+        for (int l = 0; l < kLanes; ++l)
+        {
+            const double x = sanitiseNonNegative(speed[l]) * washoutPerSpeed_[l];
+            termsInvMoving_[l] = invMovingG0_[l] / washout::firstStepFactor(x);
+            termsWashout_[l] = washout::decay(x);
+        }
+        termsSpeed_ = speed;
+        termsValid_ = true;
     }
+    invMoving = termsInvMoving_;
+    decay = termsWashout_;
 }
 
 // HeatBalance::solveTemperature with local(), lane by lane.

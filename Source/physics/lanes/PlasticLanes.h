@@ -57,6 +57,10 @@ class PlasticLanes final : public LaneFriction
     Lanes force_{}, area_{};
     Lanes capacityRate_{}, advectionPerSpeed_{}, kernelScale_{}, invStationaryG0_{}, invMovingG0_{},
         washoutPerSpeed_{};
+    // movingTerms() of the last speeds asked, at the current forces: a sample asks four times, the first time
+    // for the speeds the last commit used and the last two times for one set of speeds. A cache.
+    mutable Lanes termsSpeed_{}, termsInvMoving_{}, termsWashout_{};
+    mutable bool termsValid_ = false;
 };
 
 } // namespace rosin::physics
