@@ -321,6 +321,23 @@ TEST_F(ScanCli, FigureScriptsAreFoundBesideTheExecutable)
     EXPECT_EQ(slurp(path("installed/drawn-by-installed-script")), "yes");
 }
 
+// Issue 19's shell injection: the output folder reaches the figure script as one argument, never through a
+// shell, so a folder named like a command is only a name.
+TEST_F(ScanCli, AnOutputFolderNamedLikeAShellCommandIsOnlyAName)
+{
+    const std::string evil = "r'; touch pwned; echo '";
+    {
+        std::ofstream script(path("mark.py"));
+        script << "import sys\nopen(sys.argv[1] + '/drawn', 'w').write('yes')\n";
+    }
+    auto args = tiny(evil);
+    args.erase(std::find(args.begin(), args.end(), "--no-figures"));
+    const Result r = scan(args, "ROSIN_FIGURE_SCRIPT=" + quote(path("mark.py")));
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(slurp(path(evil + "/drawn")), "yes") << r.err;
+    EXPECT_FALSE(fs::exists(path("pwned")));
+}
+
 TEST_F(ScanCli, CompareDrawsTheDifferenceOfTwoScans)
 {
     ASSERT_EQ(scan(tiny("a", {"--friction", "classical"})).status, 0);
