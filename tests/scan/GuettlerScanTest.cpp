@@ -13,6 +13,7 @@
 
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -31,6 +32,7 @@ class GuettlerScan : public ::testing::Test
   protected:
     static void SetUpTestSuite()
     {
+        dir_ = std::make_unique<rosin::test::TempDir>();
         for (const char* law : {"classical", "reconstructed", "plastic"})
         {
             ScanSpec spec = defaultSpec(ScanKind::Guettler);
@@ -47,9 +49,11 @@ class GuettlerScan : public ::testing::Test
             spec_ = spec;
         }
     }
-    static void TearDownTestSuite() { delete dir_; }
+    static void TearDownTestSuite() { dir_.reset(); }
 
-    static inline rosin::test::TempDir* dir_ = new rosin::test::TempDir;
+    // Made in SetUpTestSuite, not at static initialisation: every test runs in a process of its own and
+    // the other suites of this binary would leave an empty folder each.
+    static inline std::unique_ptr<rosin::test::TempDir> dir_;
     static inline std::map<std::string, double> reached_;
     static inline ScanSpec spec_; ///< the last law's (plastic)
 };

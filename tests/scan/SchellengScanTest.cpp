@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -41,6 +42,7 @@ class SchellengScan : public ::testing::Test
   protected:
     static void SetUpTestSuite()
     {
+        dir_ = std::make_unique<rosin::test::TempDir>();
         ScanSpec spec = defaultSpec(ScanKind::Schelleng);
         spec.model.friction = "classical";
         RunOptions o;
@@ -51,7 +53,7 @@ class SchellengScan : public ::testing::Test
         ASSERT_TRUE(r.complete);
         summary_ = nlohmann::json::parse(readTextFile(dir_->path() + "/scan.json"));
     }
-    static void TearDownTestSuite() { delete dir_; }
+    static void TearDownTestSuite() { dir_.reset(); }
 
     // The fitted edge's force at beta, N.
     static double fitted(const char* edge, double beta)
@@ -60,7 +62,9 @@ class SchellengScan : public ::testing::Test
         return std::pow(10.0, b["intercept"].get<double>() + b["slope"].get<double>() * std::log10(beta));
     }
 
-    static inline rosin::test::TempDir* dir_ = new rosin::test::TempDir;
+    // Made in SetUpTestSuite, not at static initialisation: every test runs in a process of its own and
+    // the other suites of this binary would leave an empty folder each.
+    static inline std::unique_ptr<rosin::test::TempDir> dir_;
     static inline nlohmann::json summary_;
 };
 } // namespace
