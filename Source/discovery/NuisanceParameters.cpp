@@ -19,6 +19,13 @@ NuisanceParameter factor(const char* name, double NuisanceValues::*value, double
 NuisanceParameter chain(NuisanceParameter p)
 {
     p.measurementChain = true;
+    p.startsCalibrated = true;
+    return p;
+}
+
+NuisanceParameter tuning(NuisanceParameter p)
+{
+    p.startsCalibrated = true;
     return p;
 }
 
@@ -30,7 +37,7 @@ std::vector<NuisanceParameter> makeParameters()
                "thermal conductivity of the rosin x this"),
         factor("rosinHeatCapacity", &NuisanceValues::rosinHeatCapacity, 0.83, 1.2,
                "volumetric heat capacity of the rosin x this"),
-        factor("tension", &NuisanceValues::tension, 0.98, 1.02, "string tension x this"),
+        tuning(factor("tension", &NuisanceValues::tension, 0.98, 1.02, "string tension x this")),
         factor("stringLoss", &NuisanceValues::stringLoss, 0.83, 1.2, "every transverse loss factor x this"),
         chain(
             factor("sensorGain", &NuisanceValues::sensorGain, 0.97, 1.03, "force gauge sensitivity x this")),
@@ -39,13 +46,13 @@ std::vector<NuisanceParameter> makeParameters()
                          .max = 0.5,
                          .logarithmic = true,
                          .meaning = "the chain's low-pass corner / sample rate (0.5: none)"},
-         &NuisanceValues::sensorBandwidth, true},
+         &NuisanceValues::sensorBandwidth, true, true},
         {EffectParameter{.name = "sensorDelay",
                          .unit = "s",
                          .min = 0.0,
                          .max = 0.0015,
                          .meaning = "how late the force channels are after the gesture"},
-         &NuisanceValues::sensorDelay, true},
+         &NuisanceValues::sensorDelay, true, true},
     };
 }
 } // namespace

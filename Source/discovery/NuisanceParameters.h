@@ -54,6 +54,14 @@ struct NuisanceParameter
     /// The sensor's (gain, low-pass, lag) rather than the rig's physics: a linear chain after the string,
     /// which cannot take the form of a friction effect, so an effect's fit may start from its calibration.
     bool measurementChain = false;
+    /// No effect of the catalog can take this parameter's form, so an effect's fit starts from its
+    /// calibrated value (EffectSearch): the measurement chain's, and the string's tension, i.e. its tuning.
+    /// The catalog's effects act at the contact (friction, its area, creep, the rosin's temperature) or on
+    /// the losses; none retunes the string, whose Helmholtz pitch pins the tension to a few cents
+    /// wherever Helmholtz motion is measured. Left at its stated value instead, a tension the calibration
+    /// had found (x1.01 on an independent string drawn at x1.0117) was lost with the first effect, and the
+    /// pitch's gap returned (3.4 after calibration had brought it to 0.8).
+    bool startsCalibrated = false;
     double nominal() const { return NuisanceValues{}.*value; }
 };
 

@@ -139,19 +139,21 @@ void splitTrials(const ScanGrid& grid, std::vector<std::size_t>& training, std::
     std::sort(heldOut.begin(), heldOut.end());
 }
 
+NuisanceValues effectStartNuisance(const NuisanceValues& uncalibrated, const NuisanceValues& calibrated,
+                                   const std::vector<std::size_t>& active)
+{
+    NuisanceValues start = uncalibrated;
+    const auto& nuisance = nuisanceParameters();
+    for (std::size_t j = 0; j < nuisance.size(); ++j)
+        if (nuisance[j].startsCalibrated && std::find(active.begin(), active.end(), j) == active.end())
+            start.*nuisance[j].value = calibrated.*nuisance[j].value;
+    return start;
+}
+
 SearchResult searchEffects(const SearchInputs& in, const SimulationModel& baseline,
                            const NuisanceValues& uncalibrated, const std::vector<std::size_t>& active)
 {
-    // An effect starts where the physics is as stated: the rig's parameters at their stated values (a
-    // calibration may have bent them to mimic it: rosin constants mimic a warmer rosin), and so do the active
-    // ones, which are refitted with it. The measurement chain's other parameters (gain, low-pass, lag) keep
-    // their calibrated values: a linear chain cannot take an effect's form, and an effect fitted without the
-    // low-pass the calibrated baseline already has would be handicapped.
-    NuisanceValues startNuisance = uncalibrated;
-    const auto& nuisance = nuisanceParameters();
-    for (std::size_t j = 0; j < nuisance.size(); ++j)
-        if (nuisance[j].measurementChain && std::find(active.begin(), active.end(), j) == active.end())
-            startNuisance.*nuisance[j].value = baseline.nuisance.*nuisance[j].value;
+    NuisanceValues startNuisance = effectStartNuisance(uncalibrated, baseline.nuisance, active);
     SearchResult result;
     result.model = baseline;
     std::vector<const Effect*> remaining;

@@ -7,7 +7,8 @@
 //   Fit:   a grid over the catalog's fit range (7 points for one parameter, 5 x 5 for two, 4 x 4 for two
 //          beside a choice; log-spaced where the catalog says so; every choice), then a golden-section
 //          refinement of each continuous parameter around the best point (5 evaluations each), from the
-//          nuisance values as stated (nominal; after an adopted effect, those fitted with it): a calibration
+//          nuisance values as stated (nominal, but for the tuning and the measurement chain; after an adopted
+//          effect, those fitted with it): a calibration
 //          may already have bent them to mimic the effect. Then, if the effect lowered the training objective
 //          by 2 %, the calibration's active nuisance parameters are fitted again with the effect in place (3
 //          each, over their prior) and the effect's parameters refined once more (3 each); values are rounded
@@ -76,9 +77,19 @@ struct SearchResult
     SimulationModel model; ///< baseline + adopted effects
 };
 
-/// `baseline` is the calibrated baseline, `uncalibrated` its nuisance values before calibration: the first
-/// step's effects start there, except the measurement chain's parameters that are not `active` (those
-/// refitted with each effect: CalibrationResult::active), which start calibrated.
+/// Where the first step's effects are fitted from: the stated values `uncalibrated`, because a calibration
+/// may have bent the rig's parameters to mimic an effect (rosin constants mimic a warmer rosin), and so do
+/// the `active` ones, which are refitted with each effect (CalibrationResult::active). The parameters no
+/// effect can take the form of (NuisanceParameter::startsCalibrated: the measurement chain's gain, low-pass
+/// and lag, the string's tension) keep their `calibrated` values where they are not active: an effect fitted
+/// without the low-pass or the tuning the calibrated baseline already has would carry a misfit it cannot
+/// mend (measured: on an independent string drawn at tension x1.0117, the first effect's fit from the
+/// stated tension left the pitch's gap at 3.4, where the calibration had brought it to 0.8).
+NuisanceValues effectStartNuisance(const NuisanceValues& uncalibrated, const NuisanceValues& calibrated,
+                                   const std::vector<std::size_t>& active);
+
+/// `baseline` is the calibrated baseline, `uncalibrated` its nuisance values before calibration; the first
+/// step's effects start at effectStartNuisance.
 SearchResult searchEffects(const SearchInputs& inputs, const SimulationModel& baseline,
                            const NuisanceValues& uncalibrated, const std::vector<std::size_t>& active);
 
