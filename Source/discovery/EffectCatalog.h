@@ -17,7 +17,7 @@
 //   sticking-creep       viscous-like creep during nominal sticking (seed 001 section 5.3): a dashpot in
 //                        series with the sticking contact, physics::StickingCreepLaw. Parameter:
 //                        creepResistance (eta, N s/m; the pre-slip force is the rigid-sticking one times eta
-//                        / (2Z + eta)).
+//                        / (2Z + eta)); the creep's work f^2 / eta heats a thermal law's contact.
 //   extra-string-damping string losses above the nominal loss law (as for a finger-stopped string, seed 001
 //                        Table 1 bracket and Fig. 12c). Parameters: lossScale (x) and lossTerms, a choice
 //                        of which terms grow: all (VoiceConfig::lossScale), the internal friction eta_F

@@ -30,6 +30,21 @@ struct JunctionSolution
     bool sticking = true;       ///< true when the string moves with the bow (dv == 0)
 };
 
+/// A contact that creeps while the law holds it (StickingCreepLaw): a sticking solution becomes the
+/// intersection of the load line with a dashpot of resistance eta (N s/m) in series,
+///     dv = 2Z dv_h / (2Z + eta),   f = -eta dv;
+/// a sliding one is returned as it is.
+inline JunctionSolution creepingSolution(const JunctionSolution& s, const JunctionInput& in,
+                                         double eta) noexcept
+{
+    if (!s.sticking)
+        return s;
+    JunctionSolution c = s;
+    c.dv = in.loadSlope * in.dvHistory / (in.loadSlope + eta);
+    c.frictionForce = -eta * c.dv;
+    return c;
+}
+
 /// Base of every friction law. prepare() may allocate and calibrate (never on the audio thread);
 /// reset() clears dynamic state without allocating; solve() is real-time safe.
 class FrictionLaw
@@ -42,6 +57,14 @@ class FrictionLaw
     virtual void reset() noexcept = 0;
     /// One sample of the junction; advances the law's state.
     virtual JunctionSolution solve(const JunctionInput& in) noexcept = 0;
+    /// One sample with a contact that creeps while held (StickingCreepLaw, eta > 0 in N s/m): as solve(),
+    /// each sticking solution replaced by creepingSolution. A law whose state follows the power it
+    /// dissipates (the thermal laws) overrides this so that the creep's work, |f dv| = f^2 / eta, heats its
+    /// contact as sliding does: the energy the dashpot takes from the string has to go somewhere.
+    virtual JunctionSolution solveCreeping(const JunctionInput& in, double eta) noexcept
+    {
+        return creepingSolution(solve(in), in, eta);
+    }
     /// Contact temperature rise above ambient, K (0 for laws without a temperature).
     virtual double contactTemperature() const noexcept { return 0.0; }
     /// Limiting static friction coefficient the law would give now (for analysis and tests).

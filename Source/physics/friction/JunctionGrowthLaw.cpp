@@ -37,10 +37,24 @@ double JunctionGrowthLaw::growthFactor() const noexcept
 
 JunctionSolution JunctionGrowthLaw::solve(const JunctionInput& in) noexcept
 {
-    JunctionInput aged = in;
-    aged.bowForce = in.bowForce * growthFactor();
-    const JunctionSolution s = inner_->solve(aged);
-    // The hold time counts samples stuck so far; a sliding sample breaks the junctions.
+    return counted(inner_->solve(aged(in)));
+}
+
+JunctionSolution JunctionGrowthLaw::solveCreeping(const JunctionInput& in, double eta) noexcept
+{
+    return counted(inner_->solveCreeping(aged(in), eta));
+}
+
+JunctionInput JunctionGrowthLaw::aged(const JunctionInput& in) const noexcept
+{
+    JunctionInput a = in;
+    a.bowForce = in.bowForce * growthFactor();
+    return a;
+}
+
+JunctionSolution JunctionGrowthLaw::counted(const JunctionSolution& s) noexcept
+{
+    // The hold time counts samples stuck so far (creeping included); a sliding sample breaks the junctions.
     holdSamples_ = s.sticking ? holdSamples_ + 1 : 0;
     return s;
 }

@@ -35,6 +35,8 @@ class JunctionGrowthLaw final : public FrictionLaw
     void prepare(double sampleRate) override;
     void reset() noexcept override;
     JunctionSolution solve(const JunctionInput& in) noexcept override;
+    /// The aged contact creeping (a creep wrapper outside this one): the inner law's solveCreeping.
+    JunctionSolution solveCreeping(const JunctionInput& in, double eta) noexcept override;
     double contactTemperature() const noexcept override { return inner_->contactTemperature(); }
     /// The aged limit: the wrapped law's static coefficient at the force scaled by g(t_h) now, per N.
     double staticCoefficient(double bowForce) const noexcept override;
@@ -45,6 +47,8 @@ class JunctionGrowthLaw final : public FrictionLaw
     double holdTime() const noexcept { return holdSamples_ * T_; }
 
   private:
+    JunctionInput aged(const JunctionInput& in) const noexcept;   ///< the bow force x growthFactor()
+    JunctionSolution counted(const JunctionSolution& s) noexcept; ///< advances the hold time
     std::unique_ptr<FrictionLaw> inner_;
     double growth_;
     double tau_;

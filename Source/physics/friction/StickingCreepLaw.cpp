@@ -16,13 +16,8 @@ StickingCreepLaw::StickingCreepLaw(std::unique_ptr<FrictionLaw> inner, double et
 
 JunctionSolution StickingCreepLaw::solve(const JunctionInput& in) noexcept
 {
-    JunctionSolution s = inner_->solve(in);
-    if (!s.sticking)
-        return s;
     // Still "sticking" in the sense of the law (no slip has broken the contact), but creeping.
-    s.dv = in.loadSlope * in.dvHistory / (in.loadSlope + eta_);
-    s.frictionForce = -eta_ * s.dv;
-    return s;
+    return inner_->solveCreeping(in, eta_);
 }
 
 } // namespace rosin::physics

@@ -51,15 +51,28 @@ double ModifiedThermalLaw::staticCoefficient(double bowForce) const noexcept
 
 JunctionSolution ModifiedThermalLaw::solve(const JunctionInput& in) noexcept
 {
+    return step(in, 0.0);
+}
+
+JunctionSolution ModifiedThermalLaw::solveCreeping(const JunctionInput& in, double eta) noexcept
+{
+    return step(in, eta);
+}
+
+JunctionSolution ModifiedThermalLaw::step(const JunctionInput& in, double creepResistance) noexcept
+{
     JunctionInput safe = in;
     safe.dvHistory = std::isfinite(in.dvHistory) ? in.dvHistory : 0.0;
     safe.bowForce = std::isfinite(in.bowForce) ? std::max(in.bowForce, 0.0) : 0.0;
     if (!thermal_.prepared())
         return {safe.dvHistory, 0.0, false};
     const double Fb = safe.bowForce;
+    // A held contact creeps where a creep resistance is given; the corrector then sees the creep's power.
+    auto held = [&](const JunctionSolution& s)
+    { return creepResistance > 0.0 ? creepingSolution(s, safe, creepResistance) : s; };
     CurveJunctionMemory trial = memory_; // the predictor must not advance the hysteresis state
-    JunctionSolution s = solveCurveJunction(curveAt(thermal_.predict(Fb), Fb), safe, trial);
-    s = solveCurveJunction(curveAt(thermal_.predict(s, Fb), Fb), safe, memory_);
+    JunctionSolution s = held(solveCurveJunction(curveAt(thermal_.predict(Fb), Fb), safe, trial));
+    s = held(solveCurveJunction(curveAt(thermal_.predict(s, Fb), Fb), safe, memory_));
     thermal_.commit(s, Fb);
     return s;
 }

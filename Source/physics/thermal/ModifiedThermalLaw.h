@@ -32,6 +32,8 @@ class ModifiedThermalLaw final : public FrictionLaw
     /// (from the same hysteresis memory); heat commit. As for PlasticThermalLaw, the single corrector pass
     /// needs a sample rate >= 1 kHz; near the top of the calibrated range dKY/dT grows without bound.
     JunctionSolution solve(const JunctionInput& in) noexcept override;
+    /// As solve(), the held contact creeping (FrictionLaw::solveCreeping): its work heats the contact.
+    JunctionSolution solveCreeping(const JunctionInput& in, double eta) noexcept override;
     double contactTemperature() const noexcept override { return thermal_.temperature(); }
     /// K Y(T) h(0) (x Hertz factor) at the committed temperature; at ambient mu_steady(0) = 0.2 * 0.011^-0.4.
     double staticCoefficient(double bowForce) const noexcept override;
@@ -51,6 +53,8 @@ class ModifiedThermalLaw final : public FrictionLaw
 
   private:
     double hertzFactor(double bowForce) const noexcept;
+    /// solve() with creepResistance 0 (none), solveCreeping() with eta.
+    JunctionSolution step(const JunctionInput& in, double creepResistance) noexcept;
 
     ThermalContact thermal_;
     Variant variant_;

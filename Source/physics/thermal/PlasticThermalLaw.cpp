@@ -44,15 +44,30 @@ JunctionSolution PlasticThermalLaw::solveCharacteristic(double dvh, double twoZ,
 
 JunctionSolution PlasticThermalLaw::solve(const JunctionInput& in) noexcept
 {
-    const double dvh = std::isfinite(in.dvHistory) ? in.dvHistory : 0.0;
+    return step(in, 0.0);
+}
+
+JunctionSolution PlasticThermalLaw::solveCreeping(const JunctionInput& in, double eta) noexcept
+{
+    return step(in, eta);
+}
+
+JunctionSolution PlasticThermalLaw::step(const JunctionInput& in, double creepResistance) noexcept
+{
+    JunctionInput safe = in;
+    safe.dvHistory = std::isfinite(in.dvHistory) ? in.dvHistory : 0.0;
+    const double dvh = safe.dvHistory;
     const double Fb = std::isfinite(in.bowForce) ? std::max(in.bowForce, 0.0) : 0.0;
     const double twoZ = in.loadSlope;
     if (!thermal_.prepared())
         return {dvh, 0.0, false};
+    // A held contact creeps where a creep resistance is given; the corrector then sees the creep's power.
+    auto held = [&](const JunctionSolution& s)
+    { return creepResistance > 0.0 ? creepingSolution(s, safe, creepResistance) : s; };
     // Predictor: temperature with last sample's power (Woodhouse's order, one-sample lag).
-    JunctionSolution s = solveCharacteristic(dvh, twoZ, frictionLimit(thermal_.predict(Fb), Fb));
+    JunctionSolution s = held(solveCharacteristic(dvh, twoZ, frictionLimit(thermal_.predict(Fb), Fb)));
     // Corrector: temperature with this sample's power, solve once more (reference §2.5 refinement).
-    s = solveCharacteristic(dvh, twoZ, frictionLimit(thermal_.predict(s, Fb), Fb));
+    s = held(solveCharacteristic(dvh, twoZ, frictionLimit(thermal_.predict(s, Fb), Fb)));
     thermal_.commit(s, Fb);
     return s;
 }

@@ -26,6 +26,8 @@ class PlasticThermalLaw final : public FrictionLaw
     /// audio rates but approaches 1 near 0.1 m/s at 100 Hz, where a steady slide can lock onto a
     /// two-cycle. Run at >= 1 kHz.
     JunctionSolution solve(const JunctionInput& in) noexcept override;
+    /// As solve(), the held contact creeping (FrictionLaw::solveCreeping): its work heats the contact.
+    JunctionSolution solveCreeping(const JunctionInput& in, double eta) noexcept override;
     double contactTemperature() const noexcept override { return thermal_.temperature(); }
     /// tau_y(T) A(Fb) / Fb at the committed temperature (Fb raised to HeatBalance::kMinimumBowForce).
     double staticCoefficient(double bowForce) const noexcept override;
@@ -44,6 +46,9 @@ class PlasticThermalLaw final : public FrictionLaw
     const ContactParameters& contact() const noexcept { return thermal_.contact(); }
 
   private:
+    /// solve() with creepResistance 0 (none), solveCreeping() with eta.
+    JunctionSolution step(const JunctionInput& in, double creepResistance) noexcept;
+
     ThermalContact thermal_;
 };
 
