@@ -8,12 +8,13 @@
 //          beside a choice; log-spaced where the catalog says so; every choice), then a golden-section
 //          refinement of each continuous parameter around the best point (5 evaluations each), from the
 //          nuisance values as stated (nominal, but for the tuning and the measurement chain; after an adopted
-//          effect, those fitted with it): a calibration
-//          may already have bent them to mimic the effect. Then, if the effect lowered the training objective
-//          by 2 %, the calibration's active nuisance parameters are fitted again with the effect in place (3
-//          each, over their prior) and the effect's parameters refined once more (3 each); values are rounded
-//          to 3 significant digits. The objective is the training trials' Student-t loss averaged over
-//          features (GapSummary::objective). Each evaluation simulates the training trials. Why held-out
+//          effect, those fitted with it): a calibration may already have bent them to mimic the effect.
+//          Then, if the effect lowered the training objective by 2 %, the calibration's active nuisance
+//          parameters are fitted again with the effect in place (3 each, over their prior) and the effect's
+//          parameters refined once more (3 each), and if that moved the nuisance, both once more over half
+//          the width (the two trade off along a ridge: a larger contact against less creep); values are
+//          rounded to 3 significant digits. The objective is the training trials' Student-t loss averaged
+//          over features (GapSummary::objective). Each evaluation simulates the training trials. Why held-out
 //          likelihood and not an information criterion: an effect's parameters are few but its fit is a
 //          search over a nonlinear, partly chaotic model, where parameter counting (AIC, BIC) says little
 //          about how much it can overfit; scoring on trials the fit never saw penalises exactly the
