@@ -57,16 +57,11 @@ int main(int argc, char** argv)
 #endif
     benchmark::RegisterBenchmark("RosinProcessor_cello_4_strings/plastic", benchCelloChord)
         ->Unit(benchmark::kMicrosecond);
+    const std::string markdown = rosin::bench::takeMarkdownFlag(argc, argv);
     benchmark::Initialize(&argc, argv);
     rosin::bench::IterationTimeReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
-    const double blockSeconds = kBlock / kSampleRate;
-    const double stk = reporter.peer();
-    std::printf("\n%-44s %14s %12s %10s\n", "128-sample block at 48 kHz", "us/block", "% of a core",
-                "vs STK");
-    for (const auto& [name, ns] : reporter.nsPerIteration)
-        std::printf("%-44s %14.1f %11.2f%% %10s\n", name.c_str(), ns / 1e3, 100.0 * ns * 1e-9 / blockSeconds,
-                    stk > 0 ? (std::to_string(ns / stk).substr(0, 5) + "x").c_str() : "n/a");
+    rosin::bench::printSummary(reporter, kBlock, markdown);
     benchmark::Shutdown();
     return 0;
 }

@@ -1,7 +1,7 @@
 // Cost of one voice per sample at 48 kHz for each friction law (cello D string with the cello body), and in
 // the same run STK's Bowed instrument as the peer. Prints ns per sample, the real-time factor and the ratio
 // to STK: machines are noisy, ratios within one process are what can be compared.
-//   build/benchmarks/bench_voice [--benchmark_min_time=1]
+//   build/benchmarks/bench_voice [--benchmark_min_time=1] [--markdown=FILE]
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -78,19 +78,11 @@ int main(int argc, char** argv)
                                      [model](benchmark::State& s) { benchVoice(s, model); })
             ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark("Rosin_cello_4_strings/plastic", benchCello)->Unit(benchmark::kMicrosecond);
+    const std::string markdown = rosin::bench::takeMarkdownFlag(argc, argv);
     benchmark::Initialize(&argc, argv);
     rosin::bench::IterationTimeReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);
-    const double stk = reporter.peer() / kBlock;
-    std::printf("\n%-36s %12s %14s %10s %12s\n", "voice", "ns/sample", "x real time", "vs STK",
-                "% of a core");
-    for (const auto& [name, perIteration] : reporter.nsPerIteration)
-    {
-        const double ns = perIteration / kBlock;
-        std::printf("%-36s %12.1f %14.0f %10s %11.2f%%\n", name.c_str(), ns, 1e9 / (ns * kSampleRate),
-                    stk > 0 ? (std::to_string(ns / stk).substr(0, 5) + "x").c_str() : "n/a",
-                    100.0 * ns * kSampleRate / 1e9);
-    }
+    rosin::bench::printSummary(reporter, kBlock, markdown);
     benchmark::Shutdown();
     return 0;
 }
