@@ -33,11 +33,11 @@ struct JunctionSolution
 /// A contact that creeps while the law holds it (StickingCreepLaw): a sticking solution becomes the
 /// intersection of the load line with a dashpot of resistance eta (N s/m) in series,
 ///     dv = 2Z dv_h / (2Z + eta),   f = -eta dv;
-/// a sliding one is returned as it is.
+/// a sliding one, or any with eta <= 0 (no creep), is returned as it is.
 inline JunctionSolution creepingSolution(const JunctionSolution& s, const JunctionInput& in,
                                          double eta) noexcept
 {
-    if (!s.sticking)
+    if (!s.sticking || !(eta > 0.0))
         return s;
     JunctionSolution c = s;
     c.dv = in.loadSlope * in.dvHistory / (in.loadSlope + eta);

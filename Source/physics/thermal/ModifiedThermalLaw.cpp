@@ -67,12 +67,13 @@ JunctionSolution ModifiedThermalLaw::step(const JunctionInput& in, double creepR
     if (!thermal_.prepared())
         return {safe.dvHistory, 0.0, false};
     const double Fb = safe.bowForce;
-    // A held contact creeps where a creep resistance is given; the corrector then sees the creep's power.
-    auto held = [&](const JunctionSolution& s)
-    { return creepResistance > 0.0 ? creepingSolution(s, safe, creepResistance) : s; };
+    // A held contact creeps where a creep resistance is given (creepingSolution; 0: none), so the
+    // corrector sees the creep's power and the commit takes it.
     CurveJunctionMemory trial = memory_; // the predictor must not advance the hysteresis state
-    JunctionSolution s = held(solveCurveJunction(curveAt(thermal_.predict(Fb), Fb), safe, trial));
-    s = held(solveCurveJunction(curveAt(thermal_.predict(s, Fb), Fb), safe, memory_));
+    JunctionSolution s = creepingSolution(solveCurveJunction(curveAt(thermal_.predict(Fb), Fb), safe, trial),
+                                          safe, creepResistance);
+    s = creepingSolution(solveCurveJunction(curveAt(thermal_.predict(s, Fb), Fb), safe, memory_), safe,
+                         creepResistance);
     thermal_.commit(s, Fb);
     return s;
 }

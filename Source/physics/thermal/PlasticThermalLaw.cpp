@@ -61,13 +61,14 @@ JunctionSolution PlasticThermalLaw::step(const JunctionInput& in, double creepRe
     const double twoZ = in.loadSlope;
     if (!thermal_.prepared())
         return {dvh, 0.0, false};
-    // A held contact creeps where a creep resistance is given; the corrector then sees the creep's power.
-    auto held = [&](const JunctionSolution& s)
-    { return creepResistance > 0.0 ? creepingSolution(s, safe, creepResistance) : s; };
+    // A held contact creeps where a creep resistance is given (creepingSolution; 0: none), so the
+    // corrector sees the creep's power and the commit takes it.
     // Predictor: temperature with last sample's power (Woodhouse's order, one-sample lag).
-    JunctionSolution s = held(solveCharacteristic(dvh, twoZ, frictionLimit(thermal_.predict(Fb), Fb)));
+    JunctionSolution s = creepingSolution(
+        solveCharacteristic(dvh, twoZ, frictionLimit(thermal_.predict(Fb), Fb)), safe, creepResistance);
     // Corrector: temperature with this sample's power, solve once more (reference §2.5 refinement).
-    s = held(solveCharacteristic(dvh, twoZ, frictionLimit(thermal_.predict(s, Fb), Fb)));
+    s = creepingSolution(solveCharacteristic(dvh, twoZ, frictionLimit(thermal_.predict(s, Fb), Fb)), safe,
+                         creepResistance);
     thermal_.commit(s, Fb);
     return s;
 }
