@@ -5,14 +5,12 @@
 #include <cstdio>
 #include <optional>
 
-#include <juce_events/juce_events.h>
-
 #include "CommandLine.h"
 #include "ListeningOutput.h"
-#include "MidiRenderer.h"
 #include "WavWriter.h"
 #include "config/ConfigError.h"
-#include "config/PresetLoader.h"
+#include "engine/MidiInput.h"
+#include "engine/OfflineInstrument.h"
 
 namespace rosin::cli
 {
@@ -24,7 +22,7 @@ struct MidiOptions
     std::string midi, out = "rosin-midi.wav";
     std::string preset = "cello-plastic";
     std::string automation;
-    plugin::OutputChoice output = plugin::OutputChoice::RadiatedSound;
+    engine::OutputChoice output = engine::OutputChoice::RadiatedSound;
     std::string bodyResponse; ///< a measured body response (WAV), empty: the modal body
     bool dcBlocker = true;
     double sampleRate = 48000.0;
@@ -33,18 +31,18 @@ struct MidiOptions
 };
 
 /// --output takes the words of `rosin render --gesture` (ListeningOutput.h) and sets the plugin's choice.
-plugin::OutputChoice outputChoice(const std::string& v)
+engine::OutputChoice outputChoice(const std::string& v)
 {
     switch (outputQuantityFromName(v))
     {
     case OutputQuantity::Force:
-        return plugin::OutputChoice::BridgeForce;
+        return engine::OutputChoice::BridgeForce;
     case OutputQuantity::Velocity:
-        return plugin::OutputChoice::BridgeVelocity;
+        return engine::OutputChoice::BridgeVelocity;
     case OutputQuantity::Radiated:
         break;
     }
-    return plugin::OutputChoice::RadiatedSound;
+    return engine::OutputChoice::RadiatedSound;
 }
 
 MidiOptions parseMidiOptions(const std::vector<std::string>& args)
@@ -121,10 +119,11 @@ std::string midiRenderHelp()
            "FILE]\n"
            "                    [--sample-rate HZ] [--block-size N] [--tail SECONDS]\n"
            "\n"
-           "Plays a MIDI file through the plugin's own AudioProcessor (the cello or violin of the preset, "
-           "the\n"
-           "gesture controller, the output level) and writes what the plugin would output, mono 32-bit "
-           "float.\n"
+           "Plays a MIDI file through the instrument's engine, as the plugin plays it (the cello or violin "
+           "of the\n"
+           "preset, the gesture controller, the output level), and writes what the plugin would output, "
+           "mono\n"
+           "32-bit float.\n"
            "  --midi FILE.mid          standard MIDI file; all tracks are merged (see README: MIDI map)\n"
            "  --preset NAME            a factory program (default cello-plastic): one of the presets/ names\n"
            "  --automation FILE.json   parameter lanes, \"format\": \"rosin-automation/1\" (see README)\n"
@@ -143,49 +142,69 @@ std::string midiRenderHelp()
            "  --tail SECONDS           rendered after the last event (default 2)\n";
 }
 
+namespace
+{
+/// The factory program of that name; ConfigError listing the programs if there is none.
+const engine::FactoryProgram& chooseProgram(const std::vector<engine::FactoryProgram>& programs,
+                                            const std::string& name)
+{
+    std::string names;
+    for (const engine::FactoryProgram& p : programs)
+    {
+        if (p.name == name)
+            return p;
+        names += (names.empty() ? "" : ", ") + p.name;
+    }
+    throw config::ConfigError("--preset", "", "a factory program (one of " + names + ")", "\"" + name + "\"");
+}
+
+juce::File fromWorkingDirectory(const std::string& path)
+{
+    return juce::File::getCurrentWorkingDirectory().getChildFile(path);
+}
+} // namespace
+
 int runMidiRender(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
 {
     const MidiOptions o = parseMidiOptions(args);
-    // A message manager for JUCE's timers (never dispatched: builds are serviced between blocks).
-    juce::ScopedJuceInitialiser_GUI juce;
-    const juce::File midiFile = juce::File::getCurrentWorkingDirectory().getChildFile(o.midi);
+    const juce::File midiFile = fromWorkingDirectory(o.midi);
     if (!midiFile.existsAsFile())
         throw config::ConfigError("--midi", "", "an existing MIDI file", "\"" + o.midi + "\"");
-    const juce::MidiMessageSequence sequence = plugin::readMidiFile(midiFile);
-    std::optional<plugin::AutomationLanes> automation;
+    const juce::MidiMessageSequence sequence = engine::readMidiFile(midiFile);
+    std::optional<engine::AutomationLanes> automation;
     if (!o.automation.empty())
-        automation = plugin::loadAutomation(o.automation);
+        automation = engine::loadAutomation(o.automation);
 
-    plugin::RosinProcessor processor;
-    if (!processor.setProgramByName(o.preset))
+    engine::OfflineInstrument instrument;
+    instrument.setProgram(chooseProgram(engine::loadFactoryPrograms(), o.preset));
+    if (!o.bodyResponse.empty())
     {
-        std::string names;
-        for (int i = 0; i < processor.getNumPrograms(); ++i)
-            names += (names.empty() ? "" : ", ") + processor.getProgramName(i).toStdString();
-        throw config::ConfigError("--preset", "", "a factory program (one of " + names + ")",
-                                  "\"" + o.preset + "\"");
+        try
+        {
+            instrument.useBodyResponse(engine::readBodyResponse(fromWorkingDirectory(o.bodyResponse)));
+        }
+        catch (const engine::BodyResponseError& e)
+        {
+            throw config::ConfigError("--body-response", "",
+                                      "a readable impulse response (" + std::string(e.what()) + ")",
+                                      "\"" + o.bodyResponse + "\"");
+        }
     }
-    if (!o.bodyResponse.empty() &&
-        !processor.bodyResponse().load(juce::File::getCurrentWorkingDirectory().getChildFile(o.bodyResponse)))
-        throw config::ConfigError("--body-response", "",
-                                  "a readable impulse response (" +
-                                      processor.bodyResponse().status().toStdString() + ")",
-                                  "\"" + o.bodyResponse + "\"");
-    processor.setParameterValue(plugin::ids::output, static_cast<float>(o.output));
-    processor.setParameterValue(plugin::ids::dcBlocker, o.dcBlocker ? 1.0f : 0.0f);
-    plugin::MidiRenderSettings settings;
+    instrument.parameters().set(engine::ids::output, static_cast<float>(o.output));
+    instrument.parameters().set(engine::ids::dcBlocker, o.dcBlocker ? 1.0f : 0.0f);
+    engine::MidiRenderSettings settings;
     settings.sampleRate = o.sampleRate;
     settings.blockSize = o.blockSize;
     settings.tailSeconds = o.tail;
 
     const auto began = std::chrono::steady_clock::now();
-    const plugin::MidiRenderResult result =
-        plugin::renderMidi(processor, sequence, settings, automation ? &*automation : nullptr);
+    const engine::MidiRenderResult result =
+        instrument.render(sequence, settings, automation ? &*automation : nullptr);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
 
     WavWriter wav(o.out, o.sampleRate, 1,
                   "rosin plugin output (" +
-                      plugin::outputChoiceNames()[static_cast<int>(o.output)].toStdString() + "), program " +
+                      engine::outputChoiceNames()[static_cast<int>(o.output)].toStdString() + "), program " +
                       o.preset);
     const float* channel = result.audio.data();
     wav.write(&channel, static_cast<int>(result.audio.size()));

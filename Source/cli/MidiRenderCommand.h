@@ -1,6 +1,7 @@
 #pragma once
-// `rosin render --midi FILE.mid ...`: a MIDI file (and optional automation lanes) through the plugin's own
-// AudioProcessor, headless, into a WAV of exactly what the plugin would play.
+// `rosin render --midi FILE.mid ...`: a MIDI file (and optional automation lanes) through the instrument's
+// engine (engine::OfflineInstrument, the blocks the plugin's processor plays), into a WAV of exactly what the
+// plugin would play.
 #include <ostream>
 #include <string>
 #include <vector>

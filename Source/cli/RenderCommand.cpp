@@ -11,6 +11,7 @@
 #include "CommandLine.h"
 #include "ListeningOutput.h"
 #include "LoopOutput.h"
+#include "MidiRenderCommand.h"
 #include "OfflineRender.h"
 #include "ProbeChannels.h"
 #include "RigRender.h"
@@ -21,9 +22,6 @@
 #include "config/VoiceSetup.h"
 #include "gesture/BuiltinGestures.h"
 #include "gesture/GestureLimits.h"
-#ifdef ROSIN_WITH_PLUGIN_CORE
-#include "MidiRenderCommand.h"
-#endif
 
 namespace rosin::cli
 {
@@ -256,19 +254,14 @@ std::string renderHelp()
            rigRenderHelp() +
            "\n"
            "exit status: 0 success, 1 bad value, file or preset, 2 unknown option or missing value\n"
-#ifdef ROSIN_WITH_PLUGIN_CORE
            "\n" +
-           midiRenderHelp()
-#endif
-        ;
+           midiRenderHelp();
 }
 
 int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
 {
-#ifdef ROSIN_WITH_PLUGIN_CORE
     if (isMidiRender(args))
         return runMidiRender(args, out, err);
-#endif
     const RenderOptions o = parseRenderOptions(args);
     if (o.help)
     {

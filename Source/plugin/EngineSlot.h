@@ -12,23 +12,12 @@
 #include <atomic>
 #include <memory>
 
-#include "PluginParameters.h"
-#include "physics/instrument/BowedInstrument.h"
+#include "engine/Engine.h"
 
 namespace rosin::plugin
 {
 
-struct Engine
-{
-    InstrumentKey key;
-    int programGeneration = 0; ///< which program's extras it was built with
-    long serial = 0; ///< unique per build, so the audio thread notices a new engine (no ABA on addresses)
-    double sampleRate = 48000.0;
-    physics::BowedInstrument instrument;
-    std::array<double, 8> openFrequencies{};
-    std::array<double, 8> impedances{};         ///< Z0 per string, kg/s (editor's Schelleng diagram)
-    std::array<double, 8> bridgeConductances{}; ///< per string, s/kg (schellengConductance)
-};
+using engine::Engine;
 
 class EngineSlot
 {

@@ -1,6 +1,6 @@
 #include "ParameterControls.h"
 
-#include "PluginParameters.h"
+#include "HostParameters.h"
 
 namespace rosin::plugin
 {

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "RosinEditor.h"
+#include "engine/MidiInput.h"
 #include "gesture/MidiBytes.h"
 
 namespace rosin::plugin
@@ -15,35 +16,15 @@ namespace rosin::plugin
 
 namespace
 {
-constexpr const char* kDefaultProgram = "cello-plastic";
-constexpr double kGainSmoothingSeconds = 0.01;
 const juce::Identifier kStateType{"RosinState"};
-
-// Loss at the string's ends as a bridge conductance G (s/kg), for Schelleng's F_min = Z0^2 v_b G /
-// (2 beta^2 (mu_s - mu_d)): the body's mean real admittance over the string's first ten harmonics, plus the
-// string's own damping of its fundamental expressed as the bridge conductance that would lose as much per
-// period (reflection 1 - 2 Z0 G = exp(-pi eta) => G = pi eta / (2 Z0)). A simple estimate, for display.
-double schellengConductance(const physics::InstrumentConfig& config, std::size_t i)
-{
-    const physics::StringParameters& string = config.strings[i];
-    const double f0 = string.fundamental();
-    double body = 0.0;
-    constexpr int kPoints = 32;
-    for (int k = 0; k < kPoints; ++k)
-        body += config.body.admittance(f0 * std::pow(10.0, k / (kPoints - 1.0))).real();
-    body = std::max(0.0, body / kPoints);
-    const double z0 = string.impedance();
-    const double eta = string.lossFactor(1, string.length, false);
-    return body + (z0 > 0.0 ? 3.14159265358979 * eta / (2.0 * z0) : 0.0);
-}
 } // namespace
 
 RosinProcessor::RosinProcessor()
     : juce::AudioProcessor(BusesProperties().withOutput("Output", juce::AudioChannelSet::stereo(), true)),
       state_(*this, nullptr, kStateType, createParameterLayout()), reader_(state_),
-      programs_(loadFactoryPrograms()), bypass_(state_.getRawParameterValue(ids::bypass))
+      programs_(engine::loadFactoryPrograms()), bypass_(state_.getRawParameterValue(ids::bypass))
 {
-    setCurrentProgram(findProgram(programs_, kDefaultProgram));
+    setCurrentProgram(engine::findProgram(programs_, engine::kDefaultProgramName));
     keyboardState_.addListener(&keyboardQueue_);
     startTimerHz(20);
 }
@@ -78,7 +59,7 @@ const juce::String RosinProcessor::getProgramName(int index)
 void RosinProcessor::setParameterValue(const char* id, float value)
 {
     if (auto* p = state_.getParameter(id))
-        p->setValueNotifyingHost(p->convertTo0to1(value));
+        engine::setPlainValue(*p, value);
 }
 
 void RosinProcessor::setCurrentProgram(int index)
@@ -93,15 +74,8 @@ void RosinProcessor::setCurrentProgram(int index)
         ++programGeneration_;
     }
     // The program's slow settings become parameter values, so a host sees and automates them.
-    setParameterValue(ids::instrument, static_cast<float>(instrumentIndexForPreset(preset)));
-    setParameterValue(ids::friction,
-                      static_cast<float>(static_cast<int>(physics::frictionModelFromName(preset.friction))));
-    setParameterValue(ids::body, preset.body == "rigid" ? 0.0f : 1.0f);
-    setParameterValue(ids::ambientTemperature,
-                      static_cast<float>(kCalibrationAmbientCelsius + preset.ambientOffset));
-    setParameterValue(ids::beta, static_cast<float>(preset.beta));
-    setParameterValue(ids::outputLevel,
-                      static_cast<float>(preset.outputLevel.value_or(kDefaultOutputLevelDb)));
+    for (const auto& [id, value] : engine::programParameterValues(preset))
+        setParameterValue(id, value);
     if (preset.bodyResponse && !bodyResponse_.load(juce::File(*preset.bodyResponse)))
         std::cerr << "rosin: program " << preset.name << ": " << bodyResponse_.status() << "\n";
     else if (bodyResponse_.path().isNotEmpty())
@@ -121,51 +95,19 @@ bool RosinProcessor::setProgramByName(const std::string& name)
     return false;
 }
 
-std::unique_ptr<Engine> RosinProcessor::buildEngine(const InstrumentKey& key, int generation)
-{
-    auto engine = std::make_unique<Engine>();
-    engine->key = key;
-    engine->programGeneration = generation;
-    engine->sampleRate = sampleRate_;
-    engine->serial = nextSerial_++;
-    physics::InstrumentConfig config;
-    try
-    {
-        config = buildInstrumentConfig(key, extras_);
-    }
-    catch (const std::exception& e)
-    {
-        std::cerr << "rosin: program ignored: " << e.what() << "\n";
-        config = buildInstrumentConfig(key, ProgramExtras{});
-    }
-    engine->instrument.prepare(config, sampleRate_);
-    for (int i = 0;
-         i < engine->instrument.stringCount() && i < static_cast<int>(engine->openFrequencies.size()); ++i)
-    {
-        const auto k = static_cast<std::size_t>(i);
-        engine->openFrequencies[k] = engine->instrument.openFrequency(i);
-        engine->impedances[k] = engine->instrument.config().strings[k].impedance();
-        engine->bridgeConductances[k] = schellengConductance(engine->instrument.config(), k);
-    }
-    return engine;
-}
-
 void RosinProcessor::prepareToPlay(double sampleRate, int maximumExpectedSamplesPerBlock)
 {
     std::lock_guard<std::mutex> lock(builderMutex_);
     sampleRate_ = sampleRate;
-    const InstrumentKey key = reader_.readKey();
-    slot_.installNow(buildEngine(key, programGeneration_));
+    const engine::InstrumentKey key = reader_.readKey();
+    slot_.installNow(engine::buildEngine(key, extras_, programGeneration_, nextSerial_++, sampleRate_));
     lastBuiltKey_ = key;
     lastBuiltGeneration_ = programGeneration_;
     prepared_ = true;
 
-    const Engine& engine = *slot_.active();
-    performer_.prepare(engine.serial, engine.openFrequencies.data(), engine.instrument.stringCount(),
-                       sampleRate);
     collectBodyResponse(); // a response set before is built in prepare, ready for the first block
-    output_.prepare(sampleRate, kGainSmoothingSeconds, maximumExpectedSamplesPerBlock);
-    setLatencySamples(output_.latencySamples());
+    player_.prepare(*slot_.active(), sampleRate, maximumExpectedSamplesPerBlock);
+    setLatencySamples(player_.output().latencySamples());
     resetRequested_ = false;
     runawayResets_ = 0;
     nonFiniteSamples_ = 0;
@@ -176,7 +118,7 @@ void RosinProcessor::releaseResources()
     std::lock_guard<std::mutex> lock(builderMutex_);
     slot_.installNow(nullptr);
     prepared_ = false;
-    performer_.release();
+    player_.release();
 }
 
 void RosinProcessor::reset()
@@ -191,12 +133,12 @@ void RosinProcessor::serviceEngineBuilds()
     slot_.collect();
     if (!prepared_)
         return;
-    const InstrumentKey key = reader_.readKey();
+    const engine::InstrumentKey key = reader_.readKey();
     if (key == lastBuiltKey_ && programGeneration_ == lastBuiltGeneration_)
         return;
     lastBuiltKey_ = key;
     lastBuiltGeneration_ = programGeneration_;
-    slot_.publish(buildEngine(key, programGeneration_));
+    slot_.publish(engine::buildEngine(key, extras_, programGeneration_, nextSerial_++, sampleRate_));
 }
 
 bool RosinProcessor::isBusesLayoutSupported(const BusesLayout& layouts) const
@@ -206,83 +148,21 @@ bool RosinProcessor::isBusesLayoutSupported(const BusesLayout& layouts) const
            (out == juce::AudioChannelSet::mono() || out == juce::AudioChannelSet::stereo());
 }
 
-namespace
-{
-// The host's MIDI for one block, decoded as the performer reaches each event's sample (undecodable ones are
-// skipped).
-class MidiEvents final : public performer::EventSource
-{
-  public:
-    explicit MidiEvents(const juce::MidiBuffer& midi) : next_(midi.cbegin()), end_(midi.cend()) {}
-    bool next(int sample, gesture::GestureEvent& event) noexcept override
-    {
-        while (next_ != end_ && (*next_).samplePosition <= sample)
-            if (decode(sample, event))
-                return true;
-        return false;
-    }
-    bool remaining(int sample, gesture::GestureEvent& event) noexcept override
-    {
-        while (next_ != end_)
-            if (decode(sample, event))
-                return true;
-        return false;
-    }
-
-  private:
-    bool decode(int sample, gesture::GestureEvent& event) noexcept
-    {
-        const auto m = *next_;
-        ++next_;
-        return gesture::decodeMidi(m.data, m.numBytes, sample, event);
-    }
-    juce::MidiBufferIterator next_, end_;
-};
-
-// Each sample through the output stage into the host's first channel.
-class ToOutputStage final : public performer::SampleSink
-{
-  public:
-    ToOutputStage(OutputStage& stage, const OutputSettings& settings, float* out) noexcept
-        : stage_(stage), settings_(settings), out_(out)
-    {
-    }
-    void take(int i, const physics::BowedInstrument& instrument, double bridgeForce) noexcept override
-    {
-        bool bad = false;
-        out_[i] = stage_.sample(i, instrument, bridgeForce, settings_, bad);
-        nonFinite += bad ? 1 : 0;
-    }
-    int nonFinite = 0;
-
-  private:
-    OutputStage& stage_;
-    const OutputSettings& settings_;
-    float* out_;
-};
-} // namespace
-
 void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBuffer& midi)
 {
     juce::ScopedNoDenormals noDenormals;
     const int numSamples = buffer.getNumSamples();
     buffer.clear();
-    Engine* engine = slot_.acquire();
-    if (engine == nullptr || buffer.getNumChannels() == 0)
+    Engine* active = slot_.acquire();
+    if (active == nullptr || buffer.getNumChannels() == 0)
         return;
 
-    physics::BowedInstrument& instrument = engine->instrument;
-    const int strings = instrument.stringCount();
-    performer_.follow(engine->serial, engine->openFrequencies.data(), strings, engine->sampleRate);
+    player_.follow(*active);
     if (resetRequested_.exchange(false))
-    {
-        instrument.reset();
-        performer_.reset();
-        output_.reset();
-    }
+        player_.reset(*active);
 
-    const ParameterSnapshot snapshot = reader_.read(strings);
-    performer_.beginBlock({snapshot.gesture, snapshot.intonationByEar});
+    const engine::ParameterSnapshot snapshot = reader_.read(active->instrument.stringCount());
+    player_.beginBlock(snapshot);
     collectBodyResponse();
     // The on-screen keyboard's notes, at the block's first sample.
     keyboardQueue_.drain(
@@ -290,32 +170,30 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
         {
             gesture::GestureEvent e;
             if (gesture::decodeMidi(bytes, size, 0, e))
-                performer_.handleEvent(e);
+                player_.performer().handleEvent(e);
         });
 
     float* out = buffer.getWritePointer(0);
-    MidiEvents events(midi);
-    ToOutputStage sink(output_, snapshot.output, out);
-    const int runaways = performer_.process(instrument, events, sink, numSamples);
-    output_.finishBlock(out, numSamples, snapshot.output);
+    engine::MidiBufferEvents events(midi);
+    const auto played = player_.play(*active, events, snapshot.output, out, numSamples);
     const float bypassTarget = bypass_->load() >= 0.5f ? 0.0f : 1.0f;
     if (bypassTarget != 1.0f || bypassGain_ != 1.0f)
         buffer.applyGainRamp(0, 0, numSamples, bypassGain_, bypassTarget);
     bypassGain_ = bypassTarget;
     for (int c = 1; c < buffer.getNumChannels(); ++c)
         buffer.copyFrom(c, 0, buffer, 0, 0, numSamples);
-    publishTelemetry(*engine);
-    if (runaways > 0)
-        runawayResets_.fetch_add(runaways, std::memory_order_relaxed);
-    if (sink.nonFinite > 0)
-        nonFiniteSamples_.fetch_add(sink.nonFinite, std::memory_order_relaxed);
+    publishTelemetry(*active);
+    if (played.runawayResets > 0)
+        runawayResets_.fetch_add(played.runawayResets, std::memory_order_relaxed);
+    if (played.nonFinite > 0)
+        nonFiniteSamples_.fetch_add(played.nonFinite, std::memory_order_relaxed);
 }
 
 void RosinProcessor::collectBodyResponse() noexcept
 {
     responseHandoff_.collect([this](juce::AudioBuffer<float>&& response, double rate)
-                             { output_.measured().use(std::move(response), rate); },
-                             [this] { output_.measured().clear(); });
+                             { player_.output().measured().use(std::move(response), rate); },
+                             [this] { player_.output().measured().clear(); });
 }
 
 void RosinProcessor::publishIdleTelemetry()
@@ -323,9 +201,9 @@ void RosinProcessor::publishIdleTelemetry()
     physics::InstrumentConfig config;
     {
         std::lock_guard<std::mutex> lock(builderMutex_);
-        config = buildInstrumentConfig(reader_.readKey(), extras_);
+        config = engine::buildInstrumentConfig(reader_.readKey(), extras_);
     }
-    const ParameterSnapshot snapshot = reader_.read(static_cast<int>(config.strings.size()));
+    const engine::ParameterSnapshot snapshot = reader_.read(static_cast<int>(config.strings.size()));
     auto law = physics::makeFrictionLaw(config.friction, config.contact);
     law->prepare(sampleRate_);
     const int strings = std::min(static_cast<int>(config.strings.size()), Telemetry::kMaxStrings);
@@ -336,7 +214,7 @@ void RosinProcessor::publishIdleTelemetry()
         StringReadout r;
         r.openFrequency = r.frequency = static_cast<float>(config.strings[k].fundamental());
         r.impedance = static_cast<float>(config.strings[k].impedance());
-        r.bridgeConductance = static_cast<float>(schellengConductance(config, k));
+        r.bridgeConductance = static_cast<float>(engine::schellengConductance(config, k));
         r.bowForce = static_cast<float>(snapshot.gesture.bowForce);
         r.beta = static_cast<float>(snapshot.gesture.beta);
         r.bowVelocity = 0.0f;
@@ -345,17 +223,17 @@ void RosinProcessor::publishIdleTelemetry()
     }
 }
 
-void RosinProcessor::publishTelemetry(const Engine& engine) noexcept
+void RosinProcessor::publishTelemetry(const engine::Engine& engine) noexcept
 {
     const int strings = std::min(engine.instrument.stringCount(), Telemetry::kMaxStrings);
     telemetry_.stringCount.store(strings, std::memory_order_relaxed);
     for (int s = 0; s < strings; ++s)
     {
         const auto k = static_cast<std::size_t>(s);
-        const physics::BowInput& in = performer_.input(s);
-        const physics::VoiceSample& out = performer_.output(s);
+        const physics::BowInput& in = player_.performer().input(s);
+        const physics::VoiceSample& out = player_.performer().output(s);
         StringReadout r;
-        const lab::LiveRegimeMeter& meter = performer_.meter(s);
+        const lab::LiveRegimeMeter& meter = player_.performer().meter(s);
         r.regime = meter.regime();
         r.flybacksPerPeriod = meter.flybacksPerPeriod();
         r.slipsPerPeriod = meter.slipsPerPeriod();
@@ -414,7 +292,7 @@ void RosinProcessor::setStateInformation(const void* data, int sizeInBytes)
     // Version 1 is the only format so far; later versions migrate here before replaceState.
     if (static_cast<int>(tree.getProperty("stateVersion", 0)) > kStateVersion)
         std::cerr << "rosin: state from a newer version; reading what is known\n";
-    const int program = findProgram(programs_, tree.getProperty("program").toString().toStdString());
+    const int program = engine::findProgram(programs_, tree.getProperty("program").toString().toStdString());
     {
         std::lock_guard<std::mutex> lock(builderMutex_);
         currentProgram_ = program;

@@ -1,7 +1,8 @@
 #pragma once
 // Rosin's AudioProcessor: the host's side of performer::Performer (MIDI and host parameters -> gesture ->
 // BowedInstrument, sample by sample), with programs, state, engine builds, the output stage and telemetry.
-// Shared by the plugin formats, `rosin render --midi` and the tests (library rosin_plugin_core).
+// Shared by the plugin formats and the tests (library rosin_plugin_core). Each block is played by
+// engine::BlockPlayer, as the offline render (`rosin render --midi`) plays it.
 //
 // Audio thread (processBlock): no allocation, lock or system call. Parameters are read once per block into a
 // plain snapshot (direct atomic pointers); MIDI is applied at its sample offset, so the output does not
@@ -19,12 +20,12 @@
 
 #include "BodyResponse.h"
 #include "EngineSlot.h"
-#include "FactoryPrograms.h"
-#include "InstrumentSetup.h"
+#include "HostParameters.h"
 #include "KeyboardQueue.h"
-#include "PluginParameters.h"
 #include "StringTelemetry.h"
-#include "performer/Performer.h"
+#include "engine/BlockPlayer.h"
+#include "engine/FactoryPrograms.h"
+#include "engine/InstrumentSetup.h"
 
 namespace rosin::plugin
 {
@@ -80,7 +81,7 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     int runawayResets() const noexcept { return runawayResets_.load(); }
     int nonFiniteSamples() const noexcept { return nonFiniteSamples_.load(); }
     /// The engine the audio thread uses (tests, offline tools; not thread-safe against a swap).
-    const Engine* activeEngine() const noexcept { return slot_.active(); }
+    const engine::Engine* activeEngine() const noexcept { return slot_.active(); }
     /// Per-string readouts for the editor, published by processBlock once per block (lock-free); before audio
     /// runs, the instrument's strings at rest.
     const Telemetry& telemetry() const noexcept { return telemetry_; }
@@ -91,18 +92,17 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
 
   private:
     void timerCallback() override;
-    std::unique_ptr<Engine> buildEngine(const InstrumentKey& key, int generation);
 
     juce::AudioProcessorValueTreeState state_;
     ParameterReader reader_;
-    std::vector<FactoryProgram> programs_;
+    std::vector<engine::FactoryProgram> programs_;
     int currentProgram_ = 0;
 
     // Builder side, guarded by builderMutex_ (the audio thread never takes it).
     std::mutex builderMutex_;
-    ProgramExtras extras_;
+    engine::ProgramExtras extras_;
     int programGeneration_ = 0;
-    InstrumentKey lastBuiltKey_;
+    engine::InstrumentKey lastBuiltKey_;
     int lastBuiltGeneration_ = -1;
     long nextSerial_ = 1;
     double sampleRate_ = 48000.0;
@@ -111,8 +111,7 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     EngineSlot slot_;
 
     // Audio thread state.
-    performer::Performer performer_;
-    OutputStage output_;
+    engine::BlockPlayer player_;
     std::atomic<float>* bypass_ = nullptr;
     float bypassGain_ = 1.0f; ///< the gain the last block ended at (0 bypassed, 1 playing)
     std::atomic<bool> resetRequested_{false};
@@ -122,7 +121,7 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     std::atomic<int> runawayResets_{0};
     std::atomic<int> nonFiniteSamples_{0};
     Telemetry telemetry_;
-    void publishTelemetry(const Engine& engine) noexcept;
+    void publishTelemetry(const engine::Engine& engine) noexcept;
     /// Before prepareToPlay: the lanes and diagram show the current instrument's strings at rest.
     void publishIdleTelemetry();
     juce::MidiKeyboardState keyboardState_;

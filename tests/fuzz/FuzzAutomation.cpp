@@ -3,7 +3,7 @@
 #include "FuzzTarget.h"
 #include "config/ConfigError.h"
 #include "config/JsonFile.h"
-#include "plugin/AutomationLanes.h"
+#include "engine/AutomationLanes.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
@@ -11,7 +11,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try
     {
         const auto root = config::parseJsonText(fuzz::asText(data, size), "automation.json");
-        const plugin::AutomationLanes lanes = plugin::parseAutomation(root, "automation.json");
+        const engine::AutomationLanes lanes = engine::parseAutomation(root, "automation.json");
         for (const auto& lane : lanes.lanes)
             for (double t : {-1.0, 0.0, 0.37, 5.0, 1000.0})
                 fuzz::requireFinite(lane.valueAt(t), "automation value");

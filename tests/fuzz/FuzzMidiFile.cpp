@@ -3,9 +3,9 @@
 #include <juce_audio_basics/juce_audio_basics.h>
 
 #include "FuzzTarget.h"
+#include "engine/MidiInput.h"
 #include "gesture/MidiBytes.h"
 #include "gesture/MidiGestureController.h"
-#include "plugin/MidiRenderer.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
@@ -14,7 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try
     {
         juce::MemoryInputStream in(data, size, false);
-        sequence = plugin::readMidiStream(in, "fuzz.mid");
+        sequence = engine::readMidiStream(in, "fuzz.mid");
     }
     catch (const std::runtime_error&)
     {

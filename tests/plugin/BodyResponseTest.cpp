@@ -12,8 +12,8 @@
 #include <juce_audio_formats/juce_audio_formats.h>
 
 #include "PluginTestSupport.h"
-#include "SoftClip.h"
 #include "ThreadAllocationCounter.h"
+#include "engine/SoftClip.h"
 
 namespace rosin::test
 {
@@ -58,7 +58,7 @@ struct TempFolder
     ~TempFolder() { dir.getFile().deleteRecursively(); }
 };
 
-std::vector<float> renderNote(plugin::RosinProcessor& p, plugin::OutputChoice output)
+std::vector<float> renderNote(plugin::RosinProcessor& p, engine::OutputChoice output)
 {
     setParameter(p, plugin::ids::output, static_cast<float>(output));
     setParameter(p, plugin::ids::dcBlocker, 0.0f);
@@ -79,9 +79,9 @@ TEST(BodyResponse, HostHearsTheBridgeForceThroughTheResponse)
 
     plugin::RosinProcessor withResponse;
     ASSERT_TRUE(withResponse.bodyResponse().load(file)) << withResponse.bodyResponse().status();
-    const std::vector<float> heard = renderNote(withResponse, plugin::OutputChoice::RadiatedSound);
+    const std::vector<float> heard = renderNote(withResponse, engine::OutputChoice::RadiatedSound);
     plugin::RosinProcessor plain;
-    const std::vector<float> force = renderNote(plain, plugin::OutputChoice::BridgeForce);
+    const std::vector<float> force = renderNote(plain, engine::OutputChoice::BridgeForce);
     ASSERT_EQ(heard.size(), force.size());
 
     double peak = 0.0, worst = 0.0, forcePeak = 0.0;
@@ -94,8 +94,8 @@ TEST(BodyResponse, HostHearsTheBridgeForceThroughTheResponse)
         forcePeak = std::max(forcePeak, static_cast<double>(std::abs(force[n])));
         worst = std::max(worst, std::abs(expected - heard[n]));
     }
-    ASSERT_LT(forcePeak, plugin::kSoftClipKnee); // both outputs are linear in their samples
-    ASSERT_LT(peak, plugin::kSoftClipKnee);
+    ASSERT_LT(forcePeak, engine::kSoftClipKnee); // both outputs are linear in their samples
+    ASSERT_LT(peak, engine::kSoftClipKnee);
     ASSERT_GT(peak, 1e-3);
     std::printf("[ figures  ] measured-response output vs direct convolution: worst %.2e of the peak %.3f\n",
                 worst / peak, peak);
@@ -118,11 +118,11 @@ TEST(BodyResponse, BlockSizesAgreeWithinTheConvolutionsRounding)
         juce::MidiMessageSequence seq;
         seq.addEvent(juce::MidiMessage::noteOn(1, 50, juce::uint8(80)), 0.0);
         seq.addEvent(juce::MidiMessage::noteOff(1, 50), 0.6);
-        plugin::MidiRenderSettings settings;
+        engine::MidiRenderSettings settings;
         settings.sampleRate = kFs;
         settings.blockSize = block;
         settings.tailSeconds = 0.2;
-        renders.push_back(plugin::renderMidi(p, seq, settings).audio);
+        renders.push_back(test::renderMidi(p, seq, settings).audio);
     }
     double peak = 0.0, worst = 0.0;
     for (std::size_t n = 0; n < renders[0].size(); ++n)
@@ -195,7 +195,7 @@ TEST(BodyResponse, StateKeepsTheFileAndAMissingFileIsNamed)
     const juce::String xml =
         plugin::RosinProcessor::getXmlFromBinary(saved.getData(), int(saved.getSize()))->toString();
     EXPECT_TRUE(xml.contains(file.getFullPathName()));
-    EXPECT_TRUE(xml.contains(plugin::fileSha256(file)));
+    EXPECT_TRUE(xml.contains(engine::fileSha256(file)));
     {
         plugin::RosinProcessor p;
         p.setStateInformation(saved.getData(), static_cast<int>(saved.getSize()));

@@ -47,15 +47,15 @@ TEST(PluginState, SaveAndRestoreGivesAnIdenticalNextRender)
     plugin::RosinProcessor restored;
     restored.setStateInformation(saved.getData(), static_cast<int>(saved.getSize()));
     EXPECT_EQ(restored.getProgramName(restored.getCurrentProgram()), "cello-classical");
-    for (const char* id : plugin::allParameterIds())
+    for (const char* id : engine::allParameterIds())
         EXPECT_EQ(restored.parameters().getParameter(id)->getValue(),
                   original.parameters().getParameter(id)->getValue())
             << id;
 
-    plugin::MidiRenderSettings settings;
+    engine::MidiRenderSettings settings;
     settings.tailSeconds = 0.5;
-    const auto a = plugin::renderMidi(original, demoPhrase(), settings);
-    const auto b = plugin::renderMidi(restored, demoPhrase(), settings);
+    const auto a = test::renderMidi(original, demoPhrase(), settings);
+    const auto b = test::renderMidi(restored, demoPhrase(), settings);
     EXPECT_EQ(a.audio, b.audio);
     // And the restored state is not simply the default one.
     EXPECT_NE(renderDemo("", 48000.0, 512, 0.5).audio, a.audio);

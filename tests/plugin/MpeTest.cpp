@@ -39,10 +39,10 @@ TEST(PluginMpe, PerNoteBendMovesOnlyItsOwnNote)
     seq.addEvent(juce::MidiMessage::noteOn(3, 57, static_cast<juce::uint8>(90)), 0.001);
     seq.addEvent(juce::MidiMessage::noteOff(2, 50), 1.6);
     seq.addEvent(juce::MidiMessage::noteOff(3, 57), 1.6);
-    plugin::MidiRenderSettings settings;
+    engine::MidiRenderSettings settings;
     settings.sampleRate = kFs;
     settings.tailSeconds = 0.0;
-    const auto r = plugin::renderMidi(p, seq, settings);
+    const auto r = test::renderMidi(p, seq, settings);
     ASSERT_TRUE(allFinite(r.audio));
 
     const std::vector<double> x(r.audio.begin(), r.audio.end());

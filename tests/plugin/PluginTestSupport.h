@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "MidiRenderer.h"
+#include "HostRender.h"
 #include "RosinProcessor.h"
 #include "config/PresetLoader.h"
 
@@ -24,21 +24,21 @@ inline std::vector<std::string> instrumentPresetNames()
 
 inline const juce::MidiMessageSequence& demoPhrase()
 {
-    static const juce::MidiMessageSequence sequence = plugin::readMidiFile(juce::File(ROSIN_DEMO_MIDI));
+    static const juce::MidiMessageSequence sequence = engine::readMidiFile(juce::File(ROSIN_DEMO_MIDI));
     return sequence;
 }
 
-inline plugin::MidiRenderResult renderDemo(const std::string& program, double sampleRate, int blockSize,
+inline engine::MidiRenderResult renderDemo(const std::string& program, double sampleRate, int blockSize,
                                            double tailSeconds = 1.0)
 {
     plugin::RosinProcessor processor;
     if (!program.empty())
         processor.setProgramByName(program);
-    plugin::MidiRenderSettings settings;
+    engine::MidiRenderSettings settings;
     settings.sampleRate = sampleRate;
     settings.blockSize = blockSize;
     settings.tailSeconds = tailSeconds;
-    return plugin::renderMidi(processor, demoPhrase(), settings);
+    return test::renderMidi(processor, demoPhrase(), settings);
 }
 
 /// One note at velocity 80 held for `seconds` from the start, then `tailSeconds` more, through `processor` as
@@ -49,10 +49,10 @@ inline std::vector<float> renderHeldNote(plugin::RosinProcessor& processor, int 
     juce::MidiMessageSequence seq;
     seq.addEvent(juce::MidiMessage::noteOn(1, note, static_cast<juce::uint8>(80)), 0.0);
     seq.addEvent(juce::MidiMessage::noteOff(1, note), seconds);
-    plugin::MidiRenderSettings settings;
+    engine::MidiRenderSettings settings;
     settings.sampleRate = 48000.0;
     settings.tailSeconds = tailSeconds;
-    return plugin::renderMidi(processor, seq, settings).audio;
+    return test::renderMidi(processor, seq, settings).audio;
 }
 
 inline void setParameter(plugin::RosinProcessor& p, const char* id, float plainValue)

@@ -8,8 +8,8 @@
 #include <cstdio>
 
 #include "PluginTestSupport.h"
-#include "SoftClip.h"
 #include "config/PresetLoader.h"
+#include "engine/SoftClip.h"
 
 namespace rosin::test
 {
@@ -47,19 +47,19 @@ TEST_P(PresetRender, MezzoFortePhrasePeaksNearMinusSixDbfsBelowTheClip)
 {
     plugin::RosinProcessor processor;
     processor.setProgramByName(GetParam());
-    const bool violin = plugin::instrumentIndexForPreset(config::loadPreset(GetParam())) == 1;
+    const bool violin = engine::instrumentIndexForPreset(config::loadPreset(GetParam())) == 1;
     juce::MidiMessageSequence phrase = demoPhrase();
     for (int i = 0; violin && i < phrase.getNumEvents(); ++i)
         if (auto& m = phrase.getEventPointer(i)->message; m.isNoteOnOrOff())
             m.setNoteNumber(m.getNoteNumber() + 19);
-    plugin::MidiRenderSettings settings;
+    engine::MidiRenderSettings settings;
     settings.sampleRate = 48000.0;
     settings.tailSeconds = 1.0;
-    const auto r = plugin::renderMidi(processor, phrase, settings);
+    const auto r = test::renderMidi(processor, phrase, settings);
     const double dbfs = 20.0 * std::log10(std::max(1e-9f, r.peak));
     std::printf("[ figures  ] %-20s phrase peak %.2f dBFS\n", GetParam().c_str(), dbfs);
     EXPECT_NEAR(dbfs, -6.0, 1.5) << GetParam();
-    EXPECT_LT(r.peak, plugin::kSoftClipKnee) << GetParam();
+    EXPECT_LT(r.peak, engine::kSoftClipKnee) << GetParam();
 }
 
 INSTANTIATE_TEST_SUITE_P(FactoryPresets, PresetRender, ::testing::ValuesIn(instrumentPresetNames()),

@@ -18,7 +18,7 @@ namespace
 
 constexpr double kFs = 48000.0;
 
-std::vector<float> sustainedNote(int note, plugin::OutputChoice output, bool dcBlocker)
+std::vector<float> sustainedNote(int note, engine::OutputChoice output, bool dcBlocker)
 {
     plugin::RosinProcessor p;
     setParameter(p, plugin::ids::output, static_cast<float>(output));
@@ -68,7 +68,7 @@ TEST(RadiatedSound, SustainedCelloNotesHaveNoDcAndNoSubsonicEnergy)
 {
     for (int note : {36, 43, 50, 57, 62})
     {
-        const NoteFigures f = analyse(sustainedNote(note, plugin::OutputChoice::RadiatedSound, true));
+        const NoteFigures f = analyse(sustainedNote(note, engine::OutputChoice::RadiatedSound, true));
         std::printf(
             "[ figures  ] note %d: mean %+.4f of rms, %.4f %% below 40 Hz, centroid above 60 Hz %.0f Hz\n",
             note, f.meanOverRms, 100.0 * f.shareBelow40Hz, f.centroidAbove60Hz);
@@ -81,12 +81,12 @@ TEST(RadiatedSound, SustainedCelloNotesHaveNoDcAndNoSubsonicEnergy)
 // blocker removes it, and leaves the radiated output alone.
 TEST(RadiatedSound, BridgeForceOutputKeepsItsDcUnlessBlocked)
 {
-    const NoteFigures raw = analyse(sustainedNote(50, plugin::OutputChoice::BridgeForce, false));
-    const NoteFigures blocked = analyse(sustainedNote(50, plugin::OutputChoice::BridgeForce, true));
+    const NoteFigures raw = analyse(sustainedNote(50, engine::OutputChoice::BridgeForce, false));
+    const NoteFigures blocked = analyse(sustainedNote(50, engine::OutputChoice::BridgeForce, true));
     EXPECT_GT(std::abs(raw.meanOverRms), 0.2);
     EXPECT_LT(std::abs(blocked.meanOverRms), 0.01);
-    const std::vector<float> a = sustainedNote(50, plugin::OutputChoice::RadiatedSound, true);
-    const std::vector<float> b = sustainedNote(50, plugin::OutputChoice::RadiatedSound, false);
+    const std::vector<float> a = sustainedNote(50, engine::OutputChoice::RadiatedSound, true);
+    const std::vector<float> b = sustainedNote(50, engine::OutputChoice::RadiatedSound, false);
     EXPECT_EQ(a, b);
 }
 
@@ -94,9 +94,9 @@ TEST(RadiatedSound, BridgeForceOutputKeepsItsDcUnlessBlocked)
 // (measured on D3: force 487 Hz, velocity 321 Hz, radiated 915 Hz).
 TEST(RadiatedSound, EachOutputChoiceSendsItsOwnQuantity)
 {
-    const NoteFigures force = analyse(sustainedNote(50, plugin::OutputChoice::BridgeForce, true));
-    const NoteFigures velocity = analyse(sustainedNote(50, plugin::OutputChoice::BridgeVelocity, true));
-    const NoteFigures sound = analyse(sustainedNote(50, plugin::OutputChoice::RadiatedSound, true));
+    const NoteFigures force = analyse(sustainedNote(50, engine::OutputChoice::BridgeForce, true));
+    const NoteFigures velocity = analyse(sustainedNote(50, engine::OutputChoice::BridgeVelocity, true));
+    const NoteFigures sound = analyse(sustainedNote(50, engine::OutputChoice::RadiatedSound, true));
     const auto apart = [](double a, double b) { return std::abs(std::log(a / b)) > std::log(1.2); };
     EXPECT_TRUE(apart(velocity.centroidAbove60Hz, force.centroidAbove60Hz));
     EXPECT_TRUE(apart(sound.centroidAbove60Hz, force.centroidAbove60Hz));

@@ -41,9 +41,9 @@ double noteRms(plugin::RosinProcessor& p)
     juce::MidiMessageSequence seq;
     seq.addEvent(juce::MidiMessage::noteOn(1, 50, static_cast<juce::uint8>(80)), 0.0);
     seq.addEvent(juce::MidiMessage::noteOff(1, 50), 0.6);
-    plugin::MidiRenderSettings settings;
+    engine::MidiRenderSettings settings;
     settings.tailSeconds = 0.0;
-    const auto r = plugin::renderMidi(p, seq, settings);
+    const auto r = test::renderMidi(p, seq, settings);
     double sum = 0.0;
     for (float x : r.audio)
         sum += static_cast<double>(x) * x;

@@ -31,10 +31,10 @@ std::vector<float> noteWithBowChange(const char* program, int note)
     off(1.0);
     on(1.0); // a bow change: the same sample
     off(2.0);
-    plugin::MidiRenderSettings settings;
+    engine::MidiRenderSettings settings;
     settings.sampleRate = kFs;
     settings.tailSeconds = 1.0;
-    return plugin::renderMidi(p, seq, settings).audio;
+    return test::renderMidi(p, seq, settings).audio;
 }
 
 double largestStep(const std::vector<float>& x, double from, double to)

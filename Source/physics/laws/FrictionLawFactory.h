@@ -20,6 +20,8 @@ enum class FrictionModel
     ModifiedBow,   ///< seed 002 eq. 6 with the bow jump curve (eq. 12)
     ModifiedRod    ///< seed 002 eq. 6 with the rod jump curve (eq. 13)
 };
+/// How many there are (the enum's values are 0 .. kFrictionModelCount - 1).
+inline constexpr int kFrictionModelCount = static_cast<int>(FrictionModel::ModifiedRod) + 1;
 
 /// "classical", "reconstructed", "plastic", "viscous", "modified-bow", "modified-rod".
 const char* frictionModelName(FrictionModel model);

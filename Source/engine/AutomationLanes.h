@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace rosin::plugin
+namespace rosin::engine
 {
 
 struct AutomationPoint
@@ -38,4 +38,4 @@ struct AutomationLanes
 AutomationLanes parseAutomation(const nlohmann::json& root, const std::string& file);
 AutomationLanes loadAutomation(const std::string& path);
 
-} // namespace rosin::plugin
+} // namespace rosin::engine

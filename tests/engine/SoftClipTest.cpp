@@ -5,9 +5,9 @@
 #include <cmath>
 #include <limits>
 
-#include "plugin/SoftClip.h"
+#include "engine/SoftClip.h"
 
-namespace rosin::plugin
+namespace rosin::engine
 {
 namespace
 {
@@ -43,4 +43,4 @@ TEST(SoftClip, ValueAndSlopeAreContinuousAtTheKnee)
 }
 
 } // namespace
-} // namespace rosin::plugin
+} // namespace rosin::engine

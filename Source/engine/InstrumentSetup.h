@@ -1,13 +1,13 @@
 #pragma once
-// From the plugin's instrument parameters (and the extras a factory program brings) to the physics'
+// From the instrument parameters (and the extras a factory program brings) to the physics'
 // InstrumentConfig. Runs off the audio thread only.
 #include <optional>
 
-#include "PluginParameters.h"
+#include "EngineParameters.h"
 #include "config/Preset.h"
 #include "physics/instrument/BowedInstrument.h"
 
-namespace rosin::plugin
+namespace rosin::engine
 {
 
 /// What a factory program sets beyond the host parameters: the contact, the model switches, and the
@@ -25,4 +25,4 @@ physics::InstrumentConfig buildInstrumentConfig(const InstrumentKey& key, const 
 /// 0 (cello) or 1 (violin) for a preset: by its string's name ("violin-..."), else cello.
 int instrumentIndexForPreset(const config::Preset& preset);
 
-} // namespace rosin::plugin
+} // namespace rosin::engine

@@ -1,11 +1,11 @@
-// Automation files ("rosin-automation/1", rosin render --automation): every parameter the plugin has can be
+// Automation files ("rosin-automation/1", rosin render --automation): every parameter the engine has can be
 // automated, by its own unit, choice name or true/false; mistakes name the file, the field and what was
 // expected.
 #include <gtest/gtest.h>
 
-#include "AutomationLanes.h"
-#include "PluginTestSupport.h"
 #include "config/ConfigError.h"
+#include "engine/AutomationLanes.h"
+#include "engine/ParameterSet.h"
 
 namespace rosin::test
 {
@@ -14,11 +14,11 @@ namespace
 
 TEST(AutomationLanes, EveryParameterCanBeAutomated)
 {
-    plugin::RosinProcessor p;
+    engine::ParameterSet p;
     nlohmann::json lanes = nlohmann::json::object();
-    for (const char* id : plugin::allParameterIds())
+    for (const char* id : engine::allParameterIds())
     {
-        auto* parameter = p.parameters().getParameter(id);
+        auto* parameter = p.find(id);
         ASSERT_NE(parameter, nullptr) << id;
         nlohmann::json value;
         if (auto* choice = dynamic_cast<juce::AudioParameterChoice*>(parameter))
@@ -30,11 +30,11 @@ TEST(AutomationLanes, EveryParameterCanBeAutomated)
         lanes[id] = nlohmann::json::array({nlohmann::json::array({0.0, value})});
     }
     const nlohmann::json root = {{"format", "rosin-automation/1"}, {"lanes", lanes}};
-    const plugin::AutomationLanes parsed = plugin::parseAutomation(root, "all.json");
-    ASSERT_EQ(parsed.lanes.size(), plugin::allParameterIds().size());
+    const engine::AutomationLanes parsed = engine::parseAutomation(root, "all.json");
+    ASSERT_EQ(parsed.lanes.size(), engine::allParameterIds().size());
     for (const auto& lane : parsed.lanes)
     {
-        auto* parameter = p.parameters().getParameter(lane.parameterId);
+        auto* parameter = p.find(lane.parameterId);
         if (auto* choice = dynamic_cast<juce::AudioParameterChoice*>(parameter))
             EXPECT_EQ(lane.valueAt(0.0), choice->choices.size() - 1) << lane.parameterId;
     }
@@ -46,7 +46,7 @@ TEST(AutomationLanes, MistakesNameTheFieldAndTheExpectation)
     {
         try
         {
-            plugin::parseAutomation({{"format", "rosin-automation/1"}, {"lanes", lanes}}, "take.json");
+            engine::parseAutomation({{"format", "rosin-automation/1"}, {"lanes", lanes}}, "take.json");
         }
         catch (const config::ConfigError& e)
         {

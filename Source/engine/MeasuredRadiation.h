@@ -10,7 +10,7 @@
 
 #include <juce_dsp/juce_dsp.h>
 
-namespace rosin::plugin
+namespace rosin::engine
 {
 
 class MeasuredRadiation
@@ -53,4 +53,4 @@ class MeasuredRadiation
     bool prepared_ = false;
 };
 
-} // namespace rosin::plugin
+} // namespace rosin::engine

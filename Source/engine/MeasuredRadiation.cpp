@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace rosin::plugin
+namespace rosin::engine
 {
 
 void MeasuredRadiation::prepare(double sampleRate, int maximumBlockSize)
@@ -87,4 +87,4 @@ void MeasuredRadiation::mix(float* modal, int n, float audioPerPascal) noexcept
     }
 }
 
-} // namespace rosin::plugin
+} // namespace rosin::engine

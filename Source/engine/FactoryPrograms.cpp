@@ -6,11 +6,13 @@
 #include <iostream>
 #include <optional>
 
+#include "EngineParameters.h"
 #include "FactoryPresetData.h"
+#include "InstrumentSetup.h"
 #include "config/JsonFile.h"
 #include "config/PresetLoader.h"
 
-namespace rosin::plugin
+namespace rosin::engine
 {
 
 namespace
@@ -61,4 +63,15 @@ int findProgram(const std::vector<FactoryProgram>& programs, const std::string& 
     return 0;
 }
 
-} // namespace rosin::plugin
+std::vector<std::pair<const char*, float>> programParameterValues(const config::Preset& preset)
+{
+    return {{ids::instrument, static_cast<float>(instrumentIndexForPreset(preset))},
+            {ids::friction,
+             static_cast<float>(static_cast<int>(physics::frictionModelFromName(preset.friction)))},
+            {ids::body, preset.body == "rigid" ? 0.0f : 1.0f},
+            {ids::ambientTemperature, static_cast<float>(kCalibrationAmbientCelsius + preset.ambientOffset)},
+            {ids::beta, static_cast<float>(preset.beta)},
+            {ids::outputLevel, static_cast<float>(preset.outputLevel.value_or(kDefaultOutputLevelDb))}};
+}
+
+} // namespace rosin::engine

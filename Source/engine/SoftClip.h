@@ -5,7 +5,7 @@
 // shoulder rounds them, keeps the slope continuous and the output bounded.
 #include <cmath>
 
-namespace rosin::plugin
+namespace rosin::engine
 {
 
 inline constexpr double kSoftClipKnee = 0.8;
@@ -23,4 +23,4 @@ inline double softClip(double x) noexcept
     return std::copysign(shoulder, x);
 }
 
-} // namespace rosin::plugin
+} // namespace rosin::engine

@@ -4,7 +4,7 @@
 
 #include "SoftClip.h"
 
-namespace rosin::plugin
+namespace rosin::engine
 {
 
 juce::StringArray outputChoiceNames()
@@ -69,4 +69,4 @@ void OutputStage::finishBlock(float* out, int n, const OutputSettings& settings)
         out[i] = static_cast<float>(softClip(out[i] * gain_.process(settings.gain)));
 }
 
-} // namespace rosin::plugin
+} // namespace rosin::engine

@@ -1,5 +1,5 @@
 #pragma once
-// What the plugin sends to the host: the quantity the user chose (the sound the body radiates by default,
+// What the instrument sends out (to the plugin's host, to a rendered file): the quantity the user chose (the sound the body radiates by default,
 // from the modal body or from a measured body response; the bridge force or the bridge velocity for the lab),
 // scaled to audio, DC-blocked where the quantity has a DC (the bow's static pull on the bridge), guarded
 // against non-finite values, then per block gained and soft-clipped. Real-time safe after prepare().
@@ -9,7 +9,7 @@
 #include "gesture/OnePoleSmoother.h"
 #include "physics/instrument/BowedInstrument.h"
 
-namespace rosin::plugin
+namespace rosin::engine
 {
 
 enum class OutputChoice
@@ -60,4 +60,4 @@ class OutputStage
     gesture::OnePoleSmoother gain_;
 };
 
-} // namespace rosin::plugin
+} // namespace rosin::engine

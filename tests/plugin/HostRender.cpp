@@ -1,10 +1,9 @@
-#include "MidiRenderer.h"
+#include "HostRender.h"
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
-namespace rosin::plugin
+namespace rosin::test
 {
 
 namespace
@@ -14,51 +13,25 @@ std::int64_t toSample(double seconds, double sampleRate)
     return static_cast<std::int64_t>(std::llround(std::max(0.0, seconds) * sampleRate));
 }
 
-// Sets every automated parameter to its value at `sample`; true if any changed.
-bool applyAutomation(RosinProcessor& processor, const AutomationLanes& automation, std::int64_t sample,
-                     double sampleRate)
+// Sets every automated parameter to its value at `sample` as a host's automation does; true if any changed.
+bool applyAutomation(plugin::RosinProcessor& processor, const engine::AutomationLanes& automation,
+                     std::int64_t sample, double sampleRate)
 {
     bool changed = false;
-    for (const AutomationLane& lane : automation.lanes)
-    {
-        auto* p = processor.parameters().getParameter(lane.parameterId);
-        if (p == nullptr)
-            continue;
-        const float normalised =
-            p->convertTo0to1(static_cast<float>(lane.valueAt(static_cast<double>(sample) / sampleRate)));
-        if (normalised != p->getValue())
-        {
-            p->setValueNotifyingHost(normalised);
-            changed = true;
-        }
-    }
+    for (const engine::AutomationLane& lane : automation.lanes)
+        if (auto* p = processor.parameters().getParameter(lane.parameterId))
+            changed =
+                engine::setPlainValue(
+                    *p, static_cast<float>(lane.valueAt(static_cast<double>(sample) / sampleRate)), true) ||
+                changed;
     return changed;
 }
 } // namespace
 
-juce::MidiMessageSequence readMidiFile(const juce::File& file)
-{
-    juce::FileInputStream in(file);
-    if (!in.openedOk())
-        throw std::runtime_error(file.getFullPathName().toStdString() + ": cannot open the MIDI file");
-    return readMidiStream(in, file.getFullPathName().toStdString());
-}
-
-juce::MidiMessageSequence readMidiStream(juce::InputStream& in, const std::string& name)
-{
-    juce::MidiFile midi;
-    if (!midi.readFrom(in))
-        throw std::runtime_error(name + ": not a standard MIDI file");
-    midi.convertTimestampTicksToSeconds();
-    juce::MidiMessageSequence merged;
-    for (int t = 0; t < midi.getNumTracks(); ++t)
-        merged.addSequence(*midi.getTrack(t), 0.0);
-    merged.updateMatchedPairs();
-    return merged;
-}
-
-MidiRenderResult renderMidi(RosinProcessor& processor, const juce::MidiMessageSequence& sequence,
-                            const MidiRenderSettings& settings, const AutomationLanes* automation)
+engine::MidiRenderResult renderMidi(plugin::RosinProcessor& processor,
+                                    const juce::MidiMessageSequence& sequence,
+                                    const engine::MidiRenderSettings& settings,
+                                    const engine::AutomationLanes* automation)
 {
     const double fs = settings.sampleRate;
     const int blockSize = std::max(1, settings.blockSize);
@@ -75,7 +48,7 @@ MidiRenderResult renderMidi(RosinProcessor& processor, const juce::MidiMessageSe
         applyAutomation(processor, *automation, 0, fs);
     processor.prepareToPlay(fs, blockSize);
 
-    MidiRenderResult result;
+    engine::MidiRenderResult result;
     result.audio.reserve(static_cast<std::size_t>(total));
     juce::AudioBuffer<float> buffer(2, blockSize);
     juce::MidiBuffer midi;
@@ -119,4 +92,4 @@ MidiRenderResult renderMidi(RosinProcessor& processor, const juce::MidiMessageSe
     return result;
 }
 
-} // namespace rosin::plugin
+} // namespace rosin::test

@@ -5,7 +5,7 @@
 #include "config/VoiceSetup.h"
 #include "physics/body/BodyParameters.h"
 
-namespace rosin::plugin
+namespace rosin::engine
 {
 
 int instrumentIndexForPreset(const config::Preset& preset)
@@ -42,4 +42,4 @@ physics::InstrumentConfig buildInstrumentConfig(const InstrumentKey& key, const 
     return config;
 }
 
-} // namespace rosin::plugin
+} // namespace rosin::engine

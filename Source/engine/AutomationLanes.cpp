@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "PluginParameters.h"
+#include "EngineParameters.h"
 #include "config/ConfigError.h"
 #include "config/JsonFile.h"
 #include "config/JsonObject.h"
 
-namespace rosin::plugin
+namespace rosin::engine
 {
 
 double AutomationLane::valueAt(double seconds) const noexcept
@@ -33,46 +33,6 @@ double AutomationLane::valueAt(double seconds) const noexcept
 
 namespace
 {
-struct ParameterInfo
-{
-    double min, max;
-    std::vector<std::string> choices; // non-empty for choice parameters
-    bool boolean = false;
-};
-
-ParameterInfo infoFor(const std::string& id)
-{
-    namespace r = gesture::ranges;
-    if (id == ids::bowForce)
-        return {r::bowForce.min, r::bowForce.max, {}};
-    if (id == ids::bowSpeed)
-        return {r::bowSpeed.min, r::bowSpeed.max, {}};
-    if (id == ids::attackAcceleration)
-        return {r::attackAcceleration.min, r::attackAcceleration.max, {}};
-    if (id == ids::beta)
-        return {r::beta.min, r::beta.max, {}};
-    if (id == ids::ambientTemperature)
-        return {0.0, 40.0, {}};
-    if (id == ids::outputLevel)
-        return {-60.0, 12.0, {}};
-    if (id == ids::friction)
-        return {0.0, 5.0, physics::frictionModelNames()};
-    if (id == ids::instrument)
-        return {0.0, 1.0, {"cello", "violin"}};
-    if (id == ids::string)
-        return {0.0, 4.0, {"auto", "I", "II", "III", "IV"}};
-    if (id == ids::output)
-    {
-        std::vector<std::string> names;
-        for (const auto& name : outputChoiceNames())
-            names.push_back(name.toStdString());
-        return {0.0, static_cast<double>(names.size() - 1), names};
-    }
-    if (id == ids::body || id == ids::intonation || id == ids::dcBlocker || id == ids::bypass)
-        return {0.0, 1.0, {}, true};
-    throw std::invalid_argument(id);
-}
-
 std::string knownIds()
 {
     std::string text;
@@ -92,22 +52,18 @@ AutomationLanes parseAutomation(const nlohmann::json& root, const std::string& f
     for (const auto& [id, points] : root.at("lanes").items())
     {
         const std::string field = lanes.path(id);
-        ParameterInfo info{};
-        try
-        {
-            info = infoFor(id);
-        }
-        catch (const std::invalid_argument&)
-        {
+        const ParameterSpec* spec = findParameterSpec(id);
+        if (spec == nullptr)
             throw config::ConfigError(file, field, "a parameter ID (one of " + knownIds() + ")",
                                       "\"" + id + "\"");
-        }
+        const ParameterSpec& info = *spec;
+        const bool boolean = info.kind == ParameterSpec::Kind::Switch;
         if (!points.is_array() || points.empty())
             throw config::ConfigError(file, field, "a non-empty array of [seconds, value] points",
                                       config::describeJson(points));
         AutomationLane lane;
         lane.parameterId = id;
-        lane.stepped = info.boolean || !info.choices.empty();
+        lane.stepped = info.kind != ParameterSpec::Kind::Continuous;
         for (std::size_t i = 0; i < points.size(); ++i)
         {
             const std::string at = field + "[" + std::to_string(i) + "]";
@@ -121,7 +77,7 @@ AutomationLanes parseAutomation(const nlohmann::json& root, const std::string& f
                 throw config::ConfigError(file, at, "a time in 0..600 s, not before the previous point",
                                           config::describeJson(p[0]));
             const auto& v = p[1];
-            if (info.boolean && v.is_boolean())
+            if (boolean && v.is_boolean())
                 point.value = v.get<bool>() ? 1.0 : 0.0;
             else if (!info.choices.empty() && v.is_string())
             {
@@ -152,4 +108,4 @@ AutomationLanes loadAutomation(const std::string& path)
     return parseAutomation(config::readJsonFile(path), path);
 }
 
-} // namespace rosin::plugin
+} // namespace rosin::engine
