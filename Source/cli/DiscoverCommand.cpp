@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "CommandLine.h"
+#include "OptionTable.h"
 #include "config/AtomicFile.h"
 #include "config/ConfigError.h"
 #include "discovery/DatasetReader.h"
@@ -66,6 +67,27 @@ std::vector<std::string> makeFigures(const fs::path& reportDir, std::ostream& er
 }
 } // namespace
 
+namespace
+{
+constexpr physics::Range kThreads{1.0, 1024.0, "", false, false, true};
+constexpr physics::Range kSeed{0.0, 9007199254740992.0, "", false, false, true};
+
+const OptionTable& discoverOptionTable()
+{
+    static const OptionTable table(
+        {
+            {"--json", "FILE", "the result (gap before/after per feature, steps, status)"},
+            {"--report", "DIR", "report.md (and PNG maps when python3 with matplotlib is available)"},
+            {"--baseline", "LAW", "friction law of the baseline (default plastic)"},
+            {"--threads", "N", "threads (default: every core)"},
+            {"--seed", "S", "seed of the significance test's random sign flips (default 0)"},
+            {"-h, --help", "", "this text"},
+        },
+        23);
+    return table;
+}
+} // namespace
+
 std::string discoverHelp()
 {
     return R"(usage: rosin discover DATASET --json OUT.json --report DIR [options]
@@ -81,13 +103,8 @@ significant (paired sign-flip test at 1 %, Bonferroni over the candidates, and a
 most three effects.
 
 options:
-  --json FILE          the result (gap before/after per feature, steps, status)
-  --report DIR         report.md (and PNG maps when python3 with matplotlib is available)
-  --baseline LAW       friction law of the baseline (default plastic)
-  --threads N          threads (default: every core)
-  --seed S             seed of the significance test's random sign flips (default 0)
-  -h, --help           this text
-
+)" + discoverOptionTable().describe() +
+           R"(
 exit status: 0 success, 1 bad dataset or value, 2 usage error
 )";
 }
@@ -101,39 +118,23 @@ int runDiscover(const std::vector<std::string>& args, std::ostream& out, std::os
         folder = rest.front();
         rest.erase(rest.begin());
     }
-    const auto options =
-        parseOptions(rest, {"--json", "--report", "--baseline", "--threads", "--seed"}, {"--help", "-h"});
-    std::optional<std::string> json, report;
-    discovery::DiscoverySettings settings;
-    settings.threads = std::max(1u, std::thread::hardware_concurrency());
-    for (const auto& o : options)
+    const ParsedOptions options = discoverOptionTable().parse(rest);
+    if (options.has("--help"))
     {
-        if (o.name == "--help" || o.name == "-h")
-        {
-            out << discoverHelp();
-            return kExitOk;
-        }
-        if (o.name == "--json")
-            json = *o.value;
-        else if (o.name == "--report")
-            report = *o.value;
-        else if (o.name == "--baseline")
-            settings.baseline = *o.value;
-        else if (o.name == "--threads")
-        {
-            const double n = parseNumber("--threads", *o.value);
-            if (!(n >= 1 && n <= 1024 && n == std::floor(n)))
-                throw ConfigError("--threads", "", "a whole number 1..1024", *o.value);
-            settings.threads = static_cast<unsigned>(n);
-        }
-        else if (o.name == "--seed")
-        {
-            const double s = parseNumber("--seed", *o.value);
-            if (!(s >= 0 && s == std::floor(s)))
-                throw ConfigError("--seed", "", "a whole number >= 0", *o.value);
-            settings.seed = static_cast<std::uint64_t>(s);
-        }
+        out << discoverHelp();
+        return kExitOk;
     }
+    std::optional<std::string> json, report;
+    if (const auto* v = options.value("--json"))
+        json = *v;
+    if (const auto* v = options.value("--report"))
+        report = *v;
+    discovery::DiscoverySettings settings;
+    if (const auto* v = options.value("--baseline"))
+        settings.baseline = *v;
+    settings.threads = static_cast<unsigned>(
+        options.number("--threads", kThreads, std::max(1u, std::thread::hardware_concurrency())));
+    settings.seed = static_cast<std::uint64_t>(options.number("--seed", kSeed, 0.0));
     if (folder.empty())
         throw UsageError("discover needs a DATASET folder");
     if (!json || !report)

@@ -7,6 +7,8 @@
 
 #include "CommandLine.h"
 #include "ListeningOutput.h"
+#include "OptionTable.h"
+#include "RenderCommand.h"
 #include "WavWriter.h"
 #include "config/ConfigError.h"
 #include "engine/MidiInput.h"
@@ -28,6 +30,7 @@ struct MidiOptions
     double sampleRate = 48000.0;
     int blockSize = 512;
     double tail = 2.0;
+    bool help = false;
 };
 
 /// --output takes the words of `rosin render --gesture` (ListeningOutput.h) and sets the plugin's choice.
@@ -45,15 +48,40 @@ engine::OutputChoice outputChoice(const std::string& v)
     return engine::OutputChoice::RadiatedSound;
 }
 
+constexpr physics::Range kBlockSize{1.0, 65536.0, "samples", false, false, true};
+constexpr physics::Range kTail{0.0, 60.0, "s"};
+
+const OptionTable& midiOptionTable()
+{
+    static const OptionTable table({
+        {"--midi", "FILE.mid", "standard MIDI file; all tracks are merged (see README: MIDI map)"},
+        {"--preset", "NAME", "a factory program (default cello-plastic): one of the presets/ names"},
+        {"--automation", "FILE.json", "parameter lanes, \"format\": \"rosin-automation/1\" (see README)"},
+        {"--out", "FILE.wav", "default rosin-midi.wav"},
+        {"--output", "WHAT",
+         "the plugin's Output parameter: radiated (the sound the body radiates to a\nlistener at 1 m, "
+         "default), "
+         "force or velocity (at the bridge)"},
+        {"--dc-blocker", "on|off", "the plugin's DC blocker on the force and velocity outputs (default on)"},
+        {"--body-response", "FILE",
+         "a measured body response (WAV, AIFF or FLAC): bridge force (N) to sound\npressure (Pa), heard "
+         "instead "
+         "of the modal body's radiation"},
+        {"--sample-rate", "HZ", physics::limits::sampleRate.describe() + ", default 48000"},
+        {"--block-size", "N",
+         "host block size, " + kBlockSize.describe() + ", default 512; the output\ndoes not depend on it"},
+        {"--tail", "SECONDS", "rendered after the last event (default 2)"},
+        {"-h, --help", "", "this text"},
+    });
+    return table;
+}
+
 MidiOptions parseMidiOptions(const std::vector<std::string>& args)
 {
     MidiOptions o;
-    const auto options =
-        parseOptions(args,
-                     {"--midi", "--out", "--preset", "--automation", "--output", "--dc-blocker",
-                      "--body-response", "--sample-rate", "--block-size", "--tail"},
-                     {});
-    for (const Option& opt : options)
+    const ParsedOptions options = midiOptionTable().parse(args);
+    o.help = options.has("--help");
+    for (const Option& opt : options.all())
     {
         const std::string& v = opt.value.value_or("");
         if (opt.name == "--midi")
@@ -75,26 +103,14 @@ MidiOptions parseMidiOptions(const std::vector<std::string>& args)
             o.dcBlocker = v == "on";
         }
         else if (opt.name == "--sample-rate")
-        {
-            o.sampleRate = parseNumber(opt.name, v);
-            if (!(o.sampleRate >= 8000.0 && o.sampleRate <= 384000.0) ||
-                o.sampleRate != std::floor(o.sampleRate))
-                throw config::ConfigError(opt.name, "", "an integer in 8000..384000 (Hz)", "\"" + v + "\"");
-        }
+            o.sampleRate = parseNumberIn(opt.name, v, physics::limits::sampleRate);
         else if (opt.name == "--block-size")
-        {
-            const double b = parseNumber(opt.name, v);
-            if (!(b >= 1.0 && b <= 65536.0) || b != std::floor(b))
-                throw config::ConfigError(opt.name, "", "an integer in 1..65536 (samples)", "\"" + v + "\"");
-            o.blockSize = static_cast<int>(b);
-        }
+            o.blockSize = static_cast<int>(parseNumberIn(opt.name, v, kBlockSize));
         else if (opt.name == "--tail")
-        {
-            o.tail = parseNumber(opt.name, v);
-            if (!(o.tail >= 0.0 && o.tail <= 60.0))
-                throw config::ConfigError(opt.name, "", "a number in 0..60 (s)", "\"" + v + "\"");
-        }
+            o.tail = parseNumberIn(opt.name, v, kTail);
     }
+    if (o.help)
+        return o;
     if (o.midi.empty())
         throw config::ConfigError("--midi", "", "a MIDI file name", "an empty string");
     if (o.out.empty())
@@ -123,23 +139,8 @@ std::string midiRenderHelp()
            "of the\n"
            "preset, the gesture controller, the output level), and writes what the plugin would output, "
            "mono\n"
-           "32-bit float.\n"
-           "  --midi FILE.mid          standard MIDI file; all tracks are merged (see README: MIDI map)\n"
-           "  --preset NAME            a factory program (default cello-plastic): one of the presets/ names\n"
-           "  --automation FILE.json   parameter lanes, \"format\": \"rosin-automation/1\" (see README)\n"
-           "  --out FILE.wav           default rosin-midi.wav\n"
-           "  --output WHAT            the plugin's Output parameter: radiated (the sound the body radiates "
-           "to a\n"
-           "                           listener at 1 m, default), force or velocity (at the bridge)\n"
-           "  --dc-blocker on|off      the plugin's DC blocker on the force and velocity outputs (default "
-           "on)\n"
-           "  --body-response FILE     a measured body response (WAV, AIFF or FLAC): bridge force (N) to "
-           "sound\n"
-           "                           pressure (Pa), heard instead of the modal body's radiation\n"
-           "  --sample-rate HZ         integer 8000..384000 (default 48000)\n"
-           "  --block-size N           host block size 1..65536 (default 512); the output does not depend on "
-           "it\n"
-           "  --tail SECONDS           rendered after the last event (default 2)\n";
+           "32-bit float.\n" +
+           midiOptionTable().describe();
 }
 
 namespace
@@ -167,6 +168,11 @@ juce::File fromWorkingDirectory(const std::string& path)
 int runMidiRender(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
 {
     const MidiOptions o = parseMidiOptions(args);
+    if (o.help)
+    {
+        out << renderHelp();
+        return kExitOk;
+    }
     const juce::File midiFile = fromWorkingDirectory(o.midi);
     if (!midiFile.existsAsFile())
         throw config::ConfigError("--midi", "", "an existing MIDI file", "\"" + o.midi + "\"");

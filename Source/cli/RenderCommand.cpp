@@ -13,6 +13,7 @@
 #include "LoopOutput.h"
 #include "MidiRenderCommand.h"
 #include "OfflineRender.h"
+#include "OptionTable.h"
 #include "ProbeChannels.h"
 #include "RigRender.h"
 #include "WavWriter.h"
@@ -26,10 +27,11 @@
 namespace rosin::cli
 {
 
+const OptionTable& renderOptionTable();
+
 namespace
 {
-constexpr gesture::Range kSampleRate{8000.0, 384000.0, "Hz"};
-constexpr gesture::Range kScale{0.0, 1e9, "per unit of the --output quantity", true};
+constexpr physics::Range kScale{0.0, 1e9, "per unit of the --output quantity", true};
 constexpr double kDefaultSampleRate = 48000.0;
 const char* const kDefaultOut = "rosin-render.wav";
 
@@ -47,14 +49,11 @@ struct RenderOptions
 RenderOptions parseRenderOptions(const std::vector<std::string>& args)
 {
     RenderOptions o;
-    const auto options = parseOptions(args,
-                                      {"--gesture", "--out", "--output", "--probe", "--preset", "--friction",
-                                       "--body", "--sample-rate", "--scale", "--loop", "--loop-interval"},
-                                      {"--help", "-h"});
-    for (const Option& opt : options)
+    const ParsedOptions options = renderOptionTable().parse(args);
+    for (const Option& opt : options.all())
     {
         const std::string& v = opt.value.value_or("");
-        if (opt.name == "--help" || opt.name == "-h")
+        if (opt.name == "--help")
             o.help = true;
         else if (opt.name == "--gesture")
             o.gesture = v;
@@ -73,23 +72,14 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args)
             o.friction = v;
         else if (opt.name == "--body")
             o.body = v;
-        else if (opt.name == "--sample-rate")
-        {
-            o.sampleRate = parseNumber(opt.name, v);
-            // WAV headers store an integer rate.
-            if (!kSampleRate.contains(o.sampleRate) || o.sampleRate != std::floor(o.sampleRate))
-                throw config::ConfigError(opt.name, "", "an integer in 8000..384000 (Hz)", "\"" + v + "\"");
-        }
+        else if (opt.name == "--sample-rate") // WAV headers store an integer rate
+            o.sampleRate = parseNumberIn(opt.name, v, physics::limits::sampleRate);
         else if (opt.name == "--loop")
             (o.loop ? *o.loop : o.loop.emplace()).figure = v;
         else if (opt.name == "--loop-interval")
             parseLoopInterval(v, o.loop ? *o.loop : o.loop.emplace());
         else if (opt.name == "--scale")
-        {
-            o.scale = parseNumber(opt.name, v);
-            if (!kScale.contains(*o.scale))
-                throw config::ConfigError(opt.name, "", kScale.describe(), "\"" + v + "\"");
-        }
+            o.scale = parseNumberIn(opt.name, v, kScale);
     }
     if (o.loop && o.loop->figure.empty())
         throw config::ConfigError("--loop", "", "a figure file name (FILE.png) with --loop-interval", "none");
@@ -176,20 +166,85 @@ std::string wrap(const std::string& text, std::size_t indent, std::size_t width)
 
 } // namespace
 
-std::string renderHelp()
+namespace
 {
-    std::string presets;
-    for (const auto& n : config::presetNames())
-        presets += (presets.empty() ? "" : ", ") + n;
+// The probe's channels, one line each, for --probe's help.
+std::string probeChannelLines()
+{
     std::string channels;
     for (std::size_t i = 0; i < kProbeChannels.size(); ++i)
     {
         const auto& c = kProbeChannels[i];
         char line[160];
-        std::snprintf(line, sizeof(line), "                           %zu %-19s %-4s %s\n", i + 1, c.name,
-                      c.unit, c.what);
+        std::snprintf(line, sizeof(line), "\n%zu %-19s %-4s %s", i + 1, c.name, c.unit, c.what);
         channels += line;
     }
+    return channels;
+}
+
+std::string presetHelp()
+{
+    std::string presets;
+    for (const auto& n : config::presetNames())
+        presets += (presets.empty() ? "" : ", ") + n;
+    std::string available =
+        wrap("available: " + (presets.empty() ? std::string("none found") : presets), 0, 79);
+    available.pop_back(); // wrap() ends with a newline
+    return "instrument preset (see Resources/docs/presets.md); a NAME is looked up in\n" +
+           config::presetDirectory() + " (environment ROSIN_PRESET_DIR overrides)\n" + available +
+           "\ndefault: open cello D3 of the seed's Galluzzo rig, cello body,\nplastic friction, Galluzzo "
+           "contact, beta 0.0899";
+}
+
+std::string gestureHelp()
+{
+    std::string builtins = gesture::builtinGestureHelp("");
+    builtins.pop_back(); // it ends with a newline
+    return "the bow gesture (default: steady). Built-in gestures:\n" + builtins +
+           "\nor a JSON gesture script (\"format\": \"rosin-gesture/1\") of timed segments\nof force, speed "
+           "or "
+           "acceleration, beta and finger, each constant or a ramp;\nsee Resources/docs/gesture-script.md. "
+           "Absent values in a script's first segment:\nforce 1 N, speed 0 (bow at rest), the preset's beta, "
+           "finger 1.";
+}
+} // namespace
+
+const OptionTable& renderOptionTable()
+{
+    static const OptionTable table({
+        {"--gesture", "SPEC|FILE.json", gestureHelp()},
+        {"--out", "FILE.wav",
+         "the --output quantity, mono 32-bit float, scaled for listening\n(default: " +
+             std::string(kDefaultOut) + "); the scale is printed"},
+        {"--output", "WHAT",
+         "radiated (default): the sound pressure the body radiates to 1 m (Pa);\nforce: the bridge force "
+         "(N); "
+         "velocity: the bridge velocity (m/s).\nOn a rigid bridge the string is heard through its family's "
+         "body."},
+        {"--scale", "S",
+         "fixed scale of --out per unit of that quantity (sample = S x value);\ndefault: the peak is "
+         "normalised "
+         "to -1 dBFS"},
+        {"--probe", "FILE.wav",
+         "also write internal channels, 32-bit float, physical SI values (not\nnormalised), " +
+             std::to_string(kProbeChannels.size()) + " channels in this order:" + probeChannelLines()},
+        {"--preset", "NAME|FILE.json", presetHelp()},
+        {"--friction", "LAW",
+         "replace the preset's friction law: classical, reconstructed, plastic,\nviscous, modified-bow, "
+         "modified-rod"},
+        {"--body", "BODY", "replace the preset's body: cello, violin, rigid"},
+        {"--sample-rate", "HZ", physics::limits::sampleRate.describe() + ", default 48000"},
+        {"--loop", "FILE.png",
+         "also draw the friction/velocity hysteresis loop (seed 001 Figs. 20-21)\nand keep its samples in "
+         "FILE.csv"},
+        {"--loop-interval", "A:B", "the loop's interval in seconds (default: the last 0.05 s)"},
+        {"-h, --help", "", "this text"},
+    });
+    return table;
+}
+
+std::string renderHelp()
+{
     return "usage: rosin render [--gesture SPEC|FILE.json] [--out FILE.wav] [--output WHAT] [--probe "
            "FILE.wav]\n"
            "                    [--preset NAME|FILE.json] [--friction LAW] [--body BODY]\n"
@@ -199,48 +254,8 @@ std::string renderHelp()
            "bridge\n"
            "force or velocity).\n"
            "\n"
-           "options:\n"
-           "  --gesture SPEC|FILE.json the bow gesture (default: steady). Built-in gestures:\n" +
-           gesture::builtinGestureHelp(std::string(27, ' ')) +
-           "                           or a JSON gesture script (\"format\": \"rosin-gesture/1\") of timed "
-           "segments\n"
-           "                           of force, speed or acceleration, beta and finger, each constant or a "
-           "ramp;\n"
-           "                           see Resources/docs/gesture-script.md. Absent values in a script's "
-           "first "
-           "segment:\n"
-           "                           force 1 N, speed 0 (bow at rest), the preset's beta, finger 1.\n"
-           "  --out FILE.wav           the --output quantity, mono 32-bit float, scaled for listening\n"
-           "                           (default: " +
-           kDefaultOut +
-           "); the scale is printed\n"
-           "  --output WHAT            radiated (default): the sound pressure the body radiates to 1 m "
-           "(Pa);\n"
-           "                           force: the bridge force (N); velocity: the bridge velocity (m/s).\n"
-           "                           On a rigid bridge the string is heard through its family's body.\n"
-           "  --scale S                fixed scale of --out per unit of that quantity (sample = S x value);\n"
-           "                           default: the peak is\n"
-           "                           normalised to -1 dBFS\n"
-           "  --probe FILE.wav         also write internal channels, 32-bit float, physical SI values (not\n"
-           "                           normalised), 5 channels in this order:\n" +
-           channels +
-           "  --preset NAME|FILE.json  instrument preset (see Resources/docs/presets.md); a NAME is looked "
-           "up in\n"
-           "                           " +
-           config::presetDirectory() + " (environment ROSIN_PRESET_DIR overrides)\n" +
-           wrap("available: " + (presets.empty() ? std::string("none found") : presets), 27, 106) +
-           "                           default: open cello D3 of the seed's Galluzzo rig, cello body,\n"
-           "                           plastic friction, Galluzzo contact, beta 0.0899\n"
-           "  --friction LAW           replace the preset's friction law: classical, reconstructed, "
-           "plastic,\n"
-           "                           viscous, modified-bow, modified-rod\n"
-           "  --body BODY              replace the preset's body: cello, violin, rigid\n"
-           "  --sample-rate HZ         integer, 8000..384000 (default 48000)\n"
-           "  --loop FILE.png          also draw the friction/velocity hysteresis loop (seed 001 Figs. "
-           "20-21)\n"
-           "                           and keep its samples in FILE.csv\n"
-           "  --loop-interval A:B      the loop's interval in seconds (default: the last 0.05 s)\n"
-           "  -h, --help               this text\n"
+           "options:\n" +
+           renderOptionTable().describe() +
            "\n"
            "valid ranges: beta 0.01..0.5, force 0..20 N, speed -5..5 m/s, acceleration -50..50 m/s^2,\n"
            "finger 0.1..1 (vibrating / open length), seconds > 0 and <= 600 per segment and in total.\n"

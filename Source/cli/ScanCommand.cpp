@@ -73,49 +73,8 @@ Writes DIR/scan.csv (one row per cell), DIR/scan.json (summary: Helmholtz share,
 boundaries, theory lines) and the figures of Source/lab/figures/plot_scan.py (python3 with matplotlib);
 see Resources/docs/scan-format.md.
 
-model:
-  --preset NAME|FILE.json  instrument preset (default galluzzo-rig: cello D3 on the cello body, plastic)
-  --friction LAW           classical, reconstructed, plastic, viscous, modified-bow, modified-rod
-  --sample-rate HZ         integer 8000..384000 (default 48000)
-variations (seed 001 Figs. 9-12):
-  --layer-thickness M      rosin layer of the steady-sliding (calibration) contact (default 10e-6; Fig. 9: 15e-6)
-  --contact-radius M       radius of the calibration contact at 3 N (default 500e-6; Fig. 10: 700e-6)
-  --contact coulomb|hertz  contact area ~ N (default) or ~ N^(2/3) (Fig. 11)
-  --finger-damping         the string's intrinsic damping of a finger-stopped note (Fig. 12c)
-  --rigid-bridge           no body: a rigid bridge (Fig. 12d)
-  --no-torsion             no torsional modes (Fig. 12e)
-  --no-stiffness           no bending stiffness (Fig. 12f)
-grid (defaults: seed 001):
-  --grid N | NxM           N forces x M betas (schelleng) or x M accelerations (guettler); each 1..300;
-                           default 20x20
-  --force-range A:B        N (default schelleng 0.1:3, guettler 0.4:3.2)
-  --beta LIST              comma-separated betas (0.01..0.5); guettler default: the eight of Fig. 5,
-                           0.0357,0.0449,0.0566,0.0714,0.0899,0.1133,0.1428,0.18
-  --beta-range A:B         schelleng only (default 0.02:0.18)
-  --acceleration-range A:B guettler only, m/s^2 (default 0.08:3.2)
-  --bow-speed V            schelleng only, m/s (default 0.05)
-trial:
-  --duration S             seconds per trial (default schelleng 1, guettler 0.5)
-  --ramp S                 schelleng only: time to reach the bow speed (default 0.1)
-  --full-trials            guettler only: run every trial to --duration; by default a trial ends once its
-                           transient is decided (44 periods after the first full flyback, or as soon as
-                           Helmholtz motion can no longer start within 20 periods), and the regime column
-                           is then that of the 20 periods before that point
-  --classify state|bridge-force
-                           how slips are found for the regime and the transient: from the solver's state
-                           (default: full flybacks of the bowed point) or from the bridge force alone, as
-                           seed 001 treats measured and simulated trials alike (guettler trials then end
-                           with their transient window at the latest)
-running:
-  --out DIR                output folder (required; created if missing)
-  --threads N              threads (default: every core)
-  --shard K/N              compute only the cells with index % N == K (Slurm arrays: K = $SLURM_ARRAY_TASK_ID);
-                           writes DIR/scan.shard-K-of-N.csv; then: rosin scan merge DIR
-  --mpi                    under mpirun -np R: cells spread over the ranks, rank 0 writes the files
-  --no-figures             do not run the figure script
-  --no-progress            no progress line on stderr
-  -h, --help               this text
-
+)" + scanOptionTable().describe() +
+           R"(
 A run appends every finished cell to DIR/scan.partial.csv; after Ctrl-C (or SIGTERM) the running cells
 finish, and the same command resumes without recomputing them. The files are byte-identical however the
 work is split (threads, resume, shards, MPI). A partial file of a different scan is refused.

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "CommandLine.h"
+#include "OptionTable.h"
 #include "scan/Figures.h"
 #include "scan/ScanError.h"
 
@@ -52,10 +53,9 @@ int runScanCompare(const std::vector<std::string>& args, std::ostream& out, std:
     std::vector<std::string> options;
     for (const auto& a : args)
         (a.rfind("--", 0) == 0 || !options.empty() ? options : folders).push_back(a);
-    const auto parsed = parseOptions(options, {"--out"}, {});
-    std::string outDir;
-    for (const auto& o : parsed)
-        outDir = *o.value;
+    const ParsedOptions parsed =
+        OptionTable({{"--out", "DIR", "the folder of the difference figure"}}).parse(options);
+    const std::string outDir = parsed.value("--out") ? *parsed.value("--out") : "";
     if (folders.size() != 2 || outDir.empty())
         throw UsageError("usage: rosin scan compare A B --out DIR (A and B: folders of two finished scans)");
     const nlohmann::json a = readSummary(folders[0]), b = readSummary(folders[1]);

@@ -20,7 +20,7 @@ namespace rosin::cli
 namespace
 {
 using config::ConfigError;
-using gesture::Range;
+using physics::Range;
 using scan::ScanKind;
 
 constexpr Range kForce{0.0, 20.0, "N", true};
@@ -29,26 +29,12 @@ constexpr Range kBeta{0.01, 0.5, ""};
 constexpr Range kBowSpeed{0.0, 5.0, "m/s", true};
 constexpr Range kDuration{0.0, 60.0, "s", true};
 constexpr Range kRamp{0.0, 60.0, "s"};
-constexpr Range kSampleRate{8000.0, 384000.0, "Hz"};
 constexpr Range kLayer{1e-9, 1e-3, "m"};
 constexpr Range kRadius{1e-6, 0.01, "m"};
 
-const std::vector<std::string> kValueOptions = {"--preset",         "--friction",    "--beta",
-                                                "--grid",           "--force-range", "--acceleration-range",
-                                                "--bow-speed",      "--beta-range",  "--ramp",
-                                                "--duration",       "--sample-rate", "--threads",
-                                                "--shard",          "--out",         "--layer-thickness",
-                                                "--contact-radius", "--contact",     "--classify"};
-const std::vector<std::string> kFlags = {
-    "--help",         "-h",           "--mpi",          "--no-figures", "--no-progress", "--finger-damping",
-    "--rigid-bridge", "--no-torsion", "--no-stiffness", "--full-trials"};
-
 double number(const std::string& option, const std::string& text, const Range& range)
 {
-    const double v = parseNumber(option, text);
-    if (!range.contains(v))
-        badOptionValue(option, range.describe(), text);
-    return v;
+    return parseNumberIn(option, text, range);
 }
 
 // `whole` is the option's full value, quoted in the message (a part of "20x400" is not what the user typed).
@@ -145,22 +131,7 @@ void requireChoice(const std::string& option, const std::string& value,
 }
 
 // The option values by name (the last one wins, as for `rosin render`).
-struct Values
-{
-    std::vector<Option> options;
-    const std::string* get(const std::string& name) const
-    {
-        const std::string* found = nullptr;
-        for (const auto& o : options)
-            if (o.name == name)
-                found = &*o.value;
-        return found;
-    }
-    bool has(const std::string& name) const
-    {
-        return std::any_of(options.begin(), options.end(), [&](const Option& o) { return o.name == name; });
-    }
-};
+using Values = ParsedOptions;
 
 void rejectForKind(const Values& v, ScanKind kind)
 {
@@ -176,19 +147,19 @@ void rejectForKind(const Values& v, ScanKind kind)
 scan::ModelSpec model(const Values& v)
 {
     config::Preset preset =
-        v.get("--preset") ? config::loadPreset(*v.get("--preset")) : config::defaultPreset();
-    if (const auto* f = v.get("--friction"))
+        v.value("--preset") ? config::loadPreset(*v.value("--preset")) : config::defaultPreset();
+    if (const auto* f = v.value("--friction"))
     {
         requireChoice("--friction", *f, config::frictionNames());
         preset.friction = *f;
     }
     scan::ModelSpec m = scan::modelFromPreset(preset);
     scan::ModelVariations var;
-    if (const auto* t = v.get("--layer-thickness"))
+    if (const auto* t = v.value("--layer-thickness"))
         var.layerThickness = number("--layer-thickness", *t, kLayer);
-    if (const auto* r = v.get("--contact-radius"))
+    if (const auto* r = v.value("--contact-radius"))
         var.contactRadius = number("--contact-radius", *r, kRadius);
-    if (const auto* c = v.get("--contact"))
+    if (const auto* c = v.value("--contact"))
     {
         requireChoice("--contact", *c, {"coulomb", "hertz"});
         var.scaling = *c == "hertz" ? physics::ContactScaling::Hertz : physics::ContactScaling::Coulomb;
@@ -203,12 +174,12 @@ scan::ModelSpec model(const Values& v)
 
 void grid(const Values& v, scan::ScanSpec& s)
 {
-    const GridSize g = v.get("--grid") ? gridSize("--grid", *v.get("--grid")) : GridSize{};
+    const GridSize g = v.value("--grid") ? gridSize("--grid", *v.value("--grid")) : GridSize{};
     const bool log = s.kind == ScanKind::Schelleng;
-    const Interval f = v.get("--force-range") ? interval("--force-range", *v.get("--force-range"), kForce)
-                                              : Interval{s.forces.front(), s.forces.back()};
+    const Interval f = v.value("--force-range") ? interval("--force-range", *v.value("--force-range"), kForce)
+                                                : Interval{s.forces.front(), s.forces.back()};
     s.forces = log ? scan::logAxis(f.first, f.last, g.forces) : scan::linearAxis(f.first, f.last, g.forces);
-    if (const auto* list = v.get("--beta"))
+    if (const auto* list = v.value("--beta"))
     {
         if (log && g.explicitSecond)
             throw UsageError("--grid NxM sets the number of betas, which --beta already gives; use --grid N");
@@ -216,27 +187,27 @@ void grid(const Values& v, scan::ScanSpec& s)
     }
     else if (log)
     {
-        const Interval b = v.get("--beta-range") ? interval("--beta-range", *v.get("--beta-range"), kBeta)
-                                                 : Interval{s.betas.front(), s.betas.back()};
+        const Interval b = v.value("--beta-range") ? interval("--beta-range", *v.value("--beta-range"), kBeta)
+                                                   : Interval{s.betas.front(), s.betas.back()};
         s.betas = scan::logAxis(b.first, b.last, g.second);
     }
     if (log)
     {
-        if (const auto* speed = v.get("--bow-speed"))
+        if (const auto* speed = v.value("--bow-speed"))
             s.second = {number("--bow-speed", *speed, kBowSpeed)};
         return;
     }
-    const Interval a = v.get("--acceleration-range")
-                           ? interval("--acceleration-range", *v.get("--acceleration-range"), kAcceleration)
+    const Interval a = v.value("--acceleration-range")
+                           ? interval("--acceleration-range", *v.value("--acceleration-range"), kAcceleration)
                            : Interval{s.second.front(), s.second.back()};
     s.second = scan::linearAxis(a.first, a.last, g.second);
 }
 
 void trial(const Values& v, scan::ScanSpec& s)
 {
-    if (const auto* d = v.get("--duration"))
+    if (const auto* d = v.value("--duration"))
         s.trialSeconds = number("--duration", *d, kDuration);
-    if (const auto* r = v.get("--ramp"))
+    if (const auto* r = v.value("--ramp"))
         s.rampSeconds = number("--ramp", *r, kRamp);
     if (v.has("--full-trials"))
     {
@@ -245,7 +216,7 @@ void trial(const Values& v, scan::ScanSpec& s)
                            "schelleng");
         s.trialEnd = scan::GuettlerTrialEnd::Whole;
     }
-    if (const auto* c = v.get("--classify"))
+    if (const auto* c = v.value("--classify"))
     {
         if (*c != "state" && *c != "bridge-force")
             badOptionValue("--classify", "state or bridge-force", *c);
@@ -257,22 +228,17 @@ void trial(const Values& v, scan::ScanSpec& s)
     }
     if (s.kind == ScanKind::Schelleng && !(s.rampSeconds < s.trialSeconds))
         badOptionValue("--ramp",
-                       "a ramp shorter than the trial (--duration " + gesture::formatNumber(s.trialSeconds) +
+                       "a ramp shorter than the trial (--duration " + physics::formatNumber(s.trialSeconds) +
                            " s)",
-                       gesture::formatNumber(s.rampSeconds));
-    if (const auto* rate = v.get("--sample-rate"))
-    {
-        s.sampleRate = number("--sample-rate", *rate, kSampleRate);
-        if (s.sampleRate != std::floor(s.sampleRate))
-            badOptionValue("--sample-rate", "an integer in 8000..384000 (Hz)", *rate);
-    }
+                       physics::formatNumber(s.rampSeconds));
+    s.sampleRate = v.number("--sample-rate", physics::limits::sampleRate, s.sampleRate);
 }
 
 void runOptions(const Values& v, ScanCommandLine& c)
 {
-    if (const auto* t = v.get("--threads"))
+    if (const auto* t = v.value("--threads"))
         c.run.threads = static_cast<unsigned>(integer("--threads", *t, 1, 4096, "an integer in 1..4096"));
-    if (const auto* s = v.get("--shard"))
+    if (const auto* s = v.value("--shard"))
         c.run.shard = shard("--shard", *s);
     c.mpi = v.has("--mpi");
     if (c.mpi && c.run.shard)
@@ -291,10 +257,11 @@ ScanCommandLine merge(const std::vector<std::string>& args)
             c.out = a;
         else
             rest.push_back(a);
-    const Values v{parseOptions(rest, {"--out"}, {"--help", "-h", "--no-figures"})};
-    if (v.has("--help") || v.has("-h"))
+    const Values v =
+        OptionTable({{"--out", "DIR", ""}, {"-h, --help", "", ""}, {"--no-figures", "", ""}}).parse(rest);
+    if (v.has("--help"))
         c.action = ScanCommandLine::Action::Help;
-    if (const auto* o = v.get("--out"))
+    if (const auto* o = v.value("--out"))
         c.out = *o;
     if (c.out.empty() && c.action == ScanCommandLine::Action::Merge)
         throw UsageError("rosin scan merge needs the folder of the shards: rosin scan merge DIR");
@@ -302,6 +269,64 @@ ScanCommandLine merge(const std::vector<std::string>& args)
     return c;
 }
 } // namespace
+
+const OptionTable& scanOptionTable()
+{
+    static const OptionTable table({
+        {"", "", "model:"},
+        {"--preset", "NAME|FILE.json",
+         "instrument preset (default galluzzo-rig: cello D3 on the cello body, plastic)"},
+        {"--friction", "LAW", "classical, reconstructed, plastic, viscous, modified-bow, modified-rod"},
+        {"--sample-rate", "HZ", physics::limits::sampleRate.describe() + ", default 48000"},
+        {"", "", "variations (seed 001 Figs. 9-12):"},
+        {"--layer-thickness", "M",
+         "rosin layer of the steady-sliding (calibration) contact (default 10e-6; Fig. 9: 15e-6)"},
+        {"--contact-radius", "M",
+         "radius of the calibration contact at 3 N (default 500e-6; Fig. 10: 700e-6)"},
+        {"--contact", "coulomb|hertz", "contact area ~ N (default) or ~ N^(2/3) (Fig. 11)"},
+        {"--finger-damping", "", "the string's intrinsic damping of a finger-stopped note (Fig. 12c)"},
+        {"--rigid-bridge", "", "no body: a rigid bridge (Fig. 12d)"},
+        {"--no-torsion", "", "no torsional modes (Fig. 12e)"},
+        {"--no-stiffness", "", "no bending stiffness (Fig. 12f)"},
+        {"", "", "grid (defaults: seed 001):"},
+        {"--grid", "N | NxM",
+         "N forces x M betas (schelleng) or x M accelerations (guettler); each 1..300;\ndefault 20x20"},
+        {"--force-range", "A:B", "N (default schelleng 0.1:3, guettler 0.4:3.2)"},
+        {"--beta", "LIST",
+         "comma-separated betas (0.01..0.5); guettler default: the eight of Fig. "
+         "5,\n0.0357,0.0449,0.0566,0.0714,"
+         "0.0899,0.1133,0.1428,0.18"},
+        {"--beta-range", "A:B", "schelleng only (default 0.02:0.18)"},
+        {"--acceleration-range", "A:B", "guettler only, m/s^2 (default 0.08:3.2)"},
+        {"--bow-speed", "V", "schelleng only, m/s (default 0.05)"},
+        {"", "", "trial:"},
+        {"--duration", "S", "seconds per trial (default schelleng 1, guettler 0.5)"},
+        {"--ramp", "S", "schelleng only: time to reach the bow speed (default 0.1)"},
+        {"--full-trials", "",
+         "guettler only: run every trial to --duration; by default a trial ends once its\ntransient is "
+         "decided "
+         "(44 periods after the first full flyback, or as soon as\nHelmholtz motion can no longer start "
+         "within "
+         "20 periods), and the regime column\nis then that of the 20 periods before that point"},
+        {"--classify", "state|bridge-force",
+         "how slips are found for the regime and the transient: from the solver's state\n(default: full "
+         "flybacks "
+         "of the bowed point) or from the bridge force alone, as\nseed 001 treats measured and simulated "
+         "trials "
+         "alike (guettler trials then end\nwith their transient window at the latest)"},
+        {"", "", "running:"},
+        {"--out", "DIR", "output folder (required; created if missing)"},
+        {"--threads", "N", "threads (default: every core)"},
+        {"--shard", "K/N",
+         "compute only the cells with index % N == K (Slurm arrays: K = $SLURM_ARRAY_TASK_ID);\nwrites "
+         "DIR/scan.shard-K-of-N.csv; then: rosin scan merge DIR"},
+        {"--mpi", "", "under mpirun -np R: cells spread over the ranks, rank 0 writes the files"},
+        {"--no-figures", "", "do not run the figure script"},
+        {"--no-progress", "", "no progress line on stderr"},
+        {"-h, --help", "", "this text"},
+    });
+    return table;
+}
 
 ScanCommandLine parseScanCommandLine(const std::vector<std::string>& args)
 {
@@ -316,9 +341,9 @@ ScanCommandLine parseScanCommandLine(const std::vector<std::string>& args)
         return merge({args.begin() + 1, args.end()});
     if (kind != "schelleng" && kind != "guettler")
         throw UsageError("unknown scan \"" + kind + "\": expected schelleng, guettler or merge");
-    const Values v{parseOptions({args.begin() + 1, args.end()}, kValueOptions, kFlags)};
+    const Values v = scanOptionTable().parse({args.begin() + 1, args.end()});
     ScanCommandLine c;
-    if (v.has("--help") || v.has("-h"))
+    if (v.has("--help"))
         return c;
     c.action = ScanCommandLine::Action::Scan;
     c.spec = scan::defaultSpec(kind == "schelleng" ? ScanKind::Schelleng : ScanKind::Guettler);
@@ -327,7 +352,7 @@ ScanCommandLine parseScanCommandLine(const std::vector<std::string>& args)
     grid(v, c.spec);
     trial(v, c.spec);
     runOptions(v, c);
-    const auto* out = v.get("--out");
+    const auto* out = v.value("--out");
     if (out == nullptr)
         throw UsageError("--out DIR is required (the folder for scan.csv, scan.json and the figures)");
     if (out->empty())

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "OptionTable.h"
 #include "scan/ScanRun.h"
 #include "scan/ScanSpec.h"
 
@@ -25,6 +26,9 @@ struct ScanCommandLine
     scan::RunOptions run;
     bool mpi = false;
 };
+
+/// The options of `rosin scan schelleng|guettler` (parsing and --help).
+const OptionTable& scanOptionTable();
 
 /// args: everything after "scan".
 ScanCommandLine parseScanCommandLine(const std::vector<std::string>& args);

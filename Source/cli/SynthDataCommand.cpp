@@ -92,7 +92,7 @@ void describe(const discovery::SynthPlan& plan, const SynthDataCommandLine& c, s
     out << "synth-data " << scan::kindName(s.kind) << ": preset " << plan.presetName << ", " << s.betas.size()
         << " beta(s) x " << s.forces.size() << " forces x " << s.second.size()
         << (guettler ? " accelerations" : " bow speed") << " = " << s.cellCount() << " trials of "
-        << gesture::formatNumber(s.trialSeconds) << " s at " << plan.dataset.sampleRate << " Hz, seed "
+        << physics::formatNumber(s.trialSeconds) << " s at " << plan.dataset.sampleRate << " Hz, seed "
         << plan.seed << (c.generator == "independent" ? ", independent generator" : "") << "\n";
 }
 
@@ -170,10 +170,10 @@ std::string effectCatalogHelp()
                 text += "      " + p.name + "=" + choices + ": " + p.meaning + "; drawn " + drawn + "\n";
             }
             else
-                text += "      " + p.name + "=" + gesture::formatNumber(p.min) + ".." +
-                        gesture::formatNumber(p.max) + unit + ": " + p.meaning + "; drawn " +
-                        (p.signedDraw ? "+-" : "") + gesture::formatNumber(p.drawMin) + ".." +
-                        gesture::formatNumber(p.drawMax) + unit + "\n";
+                text += "      " + p.name + "=" + physics::formatNumber(p.min) + ".." +
+                        physics::formatNumber(p.max) + unit + ": " + p.meaning + "; drawn " +
+                        (p.signedDraw ? "+-" : "") + physics::formatNumber(p.drawMin) + ".." +
+                        physics::formatNumber(p.drawMax) + unit + "\n";
         }
         text += "      (" + e.source + ")\n";
     }
@@ -199,35 +199,8 @@ effects (NAME, or NAME:PARAMETER=VALUE,... to fix a value instead of drawing it 
 )" + effectCatalogHelp() +
            R"(  none                 no hidden effect (the baseline model)
 
-scan and grid (as rosin scan; defaults differ where noted):
-  --scan guettler|schelleng  constant-acceleration starts over (force, acceleration) at each beta, or
-                           steady bowing (speed from t = 0) over (force, beta)
-  --grid N | NxM           forces x accelerations (guettler) or x betas (schelleng); default 10
-  --beta LIST              comma-separated betas; guettler default 0.0899
-  --force-range A:B        N (default guettler 0.4:3.2, schelleng 0.1:3)
-  --acceleration-range A:B guettler only, m/s^2 (default 0.08:3.2)
-  --beta-range A:B         schelleng only (default 0.02:0.18)
-  --bow-speed V            schelleng only, m/s (default 0.05)
-  --duration S             seconds per trial (default 0.4)
-model and recording:
-  --preset NAME|FILE.json  the rig's instrument (default galluzzo-rig: cello D3 on the cello body, plastic)
-  --sample-rate HZ         integer 8000..384000 (default 44100)
-  --channels basic|all     basic (default): bridgeForce (N) and bowVelocity (m/s), as a laboratory
-                           records them; all: also frictionForce (N) and bowPointVelocity (m/s)
-  --generator rosin|independent
-                           rosin (default): Rosin's own stepper, the catalog's effect formulas; independent:
-                           data Rosin's stepper did not make, to test rosin discover on: a waveguide string
-                           (transverse + torsion) with its own finite-difference heat balance, each effect in
-                           its own form (not the catalog's formula), the rig's constants off nominal within a
-                           lab's tolerances and an unstated anti-aliasing low-pass, gain error and start
-                           delay (all drawn from the seed; --truth records them)
-output:
-  --seed S                 integer 0..2^64-1; the same seed and options give byte-identical files
-  --out DIR                the dataset folder: new or empty; built in DIR.tmp and renamed when complete
-  --truth FILE             the truth as JSON (effects, actual settings, faults); must lie outside DIR
-  --threads N              threads (default: every core)
-  -h, --help               this text
-
+)" + synthDataOptionTable().describe() +
+           R"(
 examples:
   rosin synth-data --effect junction-growth --scan guettler --grid 8 --seed 1 --out gu-jg --truth gu-jg.json
   rosin synth-data --effect sticking-creep:creepResistance=60 --effect hertz-contact --scan guettler \
@@ -276,8 +249,8 @@ int runSynthData(const std::vector<std::string>& args, std::ostream& out, std::o
         << " marked invalid), channels";
     for (const auto& ch : plan.dataset.channels)
         out << " " << ch.name;
-    out << "; sensor high-pass " << gesture::formatNumber(*plan.dataset.sensor.highpassHz) << " Hz, noise "
-        << gesture::formatNumber(*plan.dataset.sensor.noiseRms) << " rms; " << timing << " s\n";
+    out << "; sensor high-pass " << physics::formatNumber(*plan.dataset.sensor.highpassHz) << " Hz, noise "
+        << physics::formatNumber(*plan.dataset.sensor.noiseRms) << " rms; " << timing << " s\n";
     out << "hidden (not in the dataset): " << discovery::describeHiddenEffects(plan) << "\n";
     if (paths.truth)
         out << "wrote truth " << paths.truth->string() << "\n";

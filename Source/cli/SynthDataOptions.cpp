@@ -21,9 +21,7 @@ using config::ConfigError;
 using discovery::Effect;
 using discovery::EffectRequest;
 
-// Options of synth-data itself; the grid ones go to rosin scan's parser unchanged.
-const std::vector<std::string> kOwnOptions = {"--effect", "--scan",  "--preset",   "--seed",
-                                              "--out",    "--truth", "--channels", "--generator"};
+// The grid options, passed on to rosin scan's parser unchanged (its checks, its messages).
 const std::vector<std::string> kGridOptions = {
     "--beta",     "--grid",        "--force-range", "--acceleration-range", "--bow-speed", "--beta-range",
     "--duration", "--sample-rate", "--threads"};
@@ -33,19 +31,10 @@ bool contains(const std::vector<std::string>& list, const std::string& value)
     return std::find(list.begin(), list.end(), value) != list.end();
 }
 
-std::vector<std::string> values(const std::vector<Option>& options, const std::string& name)
+std::optional<std::string> optionalValue(const ParsedOptions& options, const std::string& name)
 {
-    std::vector<std::string> found;
-    for (const auto& o : options)
-        if (o.name == name)
-            found.push_back(*o.value);
-    return found;
-}
-
-std::optional<std::string> last(const std::vector<Option>& options, const std::string& name)
-{
-    const auto all = values(options, name);
-    return all.empty() ? std::nullopt : std::optional<std::string>(all.back());
+    const std::string* v = options.value(name);
+    return v == nullptr ? std::nullopt : std::optional<std::string>(*v);
 }
 
 std::string effectChoices()
@@ -87,8 +76,8 @@ void parameterValue(const Effect& effect, const std::string& item, const std::st
         v = parseNumber("--effect", text);
         if (!(v >= p.min && v <= p.max))
             badOptionValue("--effect",
-                           p.name + " in " + gesture::formatNumber(p.min) + ".." +
-                               gesture::formatNumber(p.max) + (p.unit.empty() ? "" : " (" + p.unit + ")"),
+                           p.name + " in " + physics::formatNumber(p.min) + ".." +
+                               physics::formatNumber(p.max) + (p.unit.empty() ? "" : " (" + p.unit + ")"),
                            whole);
     }
     request.fixed[index] = v;
@@ -148,7 +137,7 @@ std::uint64_t seed(const std::string& text)
 }
 
 // rosin scan's parser on the grid options, behind synth-data's defaults (the last value of an option wins).
-ScanCommandLine scanGrid(const std::string& kind, const std::vector<Option>& options)
+ScanCommandLine scanGrid(const std::string& kind, const ParsedOptions& options)
 {
     std::vector<std::string> args{
         kind,     "--duration",     kSynthDefaultDuration, "--sample-rate", kSynthDefaultSampleRate,
@@ -157,7 +146,7 @@ ScanCommandLine scanGrid(const std::string& kind, const std::vector<Option>& opt
         args.insert(args.end(), {"--beta", kSynthDefaultBeta});
     else
         args.insert(args.end(), {"--ramp", "0"}); // "steady" in the dataset format: the speed from t = 0
-    for (const auto& o : options)
+    for (const auto& o : options.all())
         if (contains(kGridOptions, o.name))
             args.insert(args.end(), {o.name, *o.value});
     args.insert(args.end(), {"--out", "unused", "--no-progress", "--no-figures"});
@@ -165,59 +154,98 @@ ScanCommandLine scanGrid(const std::string& kind, const std::vector<Option>& opt
 }
 } // namespace
 
+const OptionTable& synthDataOptionTable()
+{
+    static const OptionTable table({
+        {"", "", "scan and grid (as rosin scan; defaults differ where noted):"},
+        {"--scan", "guettler|schelleng",
+         "constant-acceleration starts over (force, acceleration) at each beta, or\nsteady bowing (speed "
+         "from t = "
+         "0) over (force, beta)"},
+        {"--grid", "N | NxM", "forces x accelerations (guettler) or x betas (schelleng); default 10"},
+        {"--beta", "LIST", "comma-separated betas; guettler default 0.0899"},
+        {"--force-range", "A:B", "N (default guettler 0.4:3.2, schelleng 0.1:3)"},
+        {"--acceleration-range", "A:B", "guettler only, m/s^2 (default 0.08:3.2)"},
+        {"--beta-range", "A:B", "schelleng only (default 0.02:0.18)"},
+        {"--bow-speed", "V", "schelleng only, m/s (default 0.05)"},
+        {"--duration", "S", "seconds per trial (default 0.4)"},
+        {"", "", "model and recording:"},
+        {"--effect", "NAME|none", "an effect above to hide (required); repeat it to hide several"},
+        {"--preset", "NAME|FILE.json",
+         "the rig's instrument (default galluzzo-rig: cello D3 on the cello body, plastic)"},
+        {"--sample-rate", "HZ", physics::limits::sampleRate.describe() + ", default 44100"},
+        {"--channels", "basic|all",
+         "basic (default): bridgeForce (N) and bowVelocity (m/s), as a laboratory\nrecords them; all: also "
+         "frictionForce (N) and bowPointVelocity (m/s)"},
+        {"--generator", "rosin|independent",
+         "rosin (default): Rosin's own stepper, the catalog's effect formulas; independent:\ndata Rosin's "
+         "stepper "
+         "did not make, to test rosin discover on: a waveguide string\n(transverse + torsion) with its own "
+         "finite-difference heat balance, each effect in\nits own form (not the catalog's formula), the "
+         "rig's "
+         "constants off nominal within a\nlab's tolerances and an unstated anti-aliasing low-pass, gain "
+         "error "
+         "and start\ndelay (all drawn from the seed; --truth records them)"},
+        {"", "", "output:"},
+        {"--seed", "S", "integer 0..2^64-1; the same seed and options give byte-identical files"},
+        {"--out", "DIR", "the dataset folder: new or empty; built in DIR.tmp and renamed when complete"},
+        {"--truth", "FILE", "the truth as JSON (effects, actual settings, faults); must lie outside DIR"},
+        {"--threads", "N", "threads (default: every core)"},
+        {"-h, --help", "", "this text"},
+    });
+    return table;
+}
+
 SynthDataCommandLine parseSynthDataCommandLine(const std::vector<std::string>& args)
 {
-    std::vector<std::string> withValue = kOwnOptions;
-    withValue.insert(withValue.end(), kGridOptions.begin(), kGridOptions.end());
-    const std::vector<Option> options = parseOptions(args, withValue, {"--help", "-h"});
+    const ParsedOptions options = synthDataOptionTable().parse(args);
     SynthDataCommandLine c;
-    if (std::any_of(options.begin(), options.end(),
-                    [](const Option& o) { return o.name == "--help" || o.name == "-h"; }))
+    if (options.has("--help"))
     {
         c.help = true;
         return c;
     }
-    const auto kind = last(options, "--scan");
+    const auto kind = optionalValue(options, "--scan");
     if (!kind)
         throw UsageError("--scan guettler|schelleng is required");
     if (*kind != "guettler" && *kind != "schelleng")
         badOptionValue("--scan", "one of guettler, schelleng", *kind);
     auto& s = c.settings;
-    s.effects = effects(values(options, "--effect"));
+    s.effects = effects(options.values("--effect"));
 
     const ScanCommandLine grid = scanGrid(*kind, options);
     s.scan = grid.spec;
     c.threads = grid.run.threads;
     if (s.scan.trialSeconds < kSynthMinDuration)
-        badOptionValue("--duration", "at least " + gesture::formatNumber(kSynthMinDuration) + " s",
-                       gesture::formatNumber(s.scan.trialSeconds));
-    s.preset =
-        last(options, "--preset") ? config::loadPreset(*last(options, "--preset")) : config::defaultPreset();
+        badOptionValue("--duration", "at least " + physics::formatNumber(kSynthMinDuration) + " s",
+                       physics::formatNumber(s.scan.trialSeconds));
+    s.preset = optionalValue(options, "--preset") ? config::loadPreset(*optionalValue(options, "--preset"))
+                                                  : config::defaultPreset();
     s.scan.model = scan::modelFromPreset(s.preset);
 
-    const auto seedText = last(options, "--seed");
+    const auto seedText = optionalValue(options, "--seed");
     if (!seedText)
         throw UsageError("--seed S is required (the same seed gives the same dataset)");
     s.seed = seed(*seedText);
-    if (const auto channels = last(options, "--channels"))
+    if (const auto channels = optionalValue(options, "--channels"))
     {
         if (*channels != "basic" && *channels != "all")
             badOptionValue("--channels", "one of basic, all", *channels);
         s.allChannels = *channels == "all";
     }
-    if (const auto generator = last(options, "--generator"))
+    if (const auto generator = optionalValue(options, "--generator"))
     {
         if (*generator != "rosin" && *generator != "independent")
             badOptionValue("--generator", "one of rosin, independent", *generator);
         c.generator = *generator;
     }
-    const auto out = last(options, "--out");
+    const auto out = optionalValue(options, "--out");
     if (!out)
         throw UsageError("--out DIR is required (the dataset folder)");
     if (out->empty())
         badOptionValue("--out", "a folder name", *out);
     c.out = *out;
-    c.truth = last(options, "--truth");
+    c.truth = optionalValue(options, "--truth");
     if (c.truth && c.truth->empty())
         badOptionValue("--truth", "a file name", *c.truth);
     return c;

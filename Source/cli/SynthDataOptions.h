@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "OptionTable.h"
 #include "discovery/synth/SynthPlan.h"
 
 namespace rosin::cli
@@ -23,6 +24,9 @@ struct SynthDataCommandLine
     /// string with its own heat balance, effect forms, nuisance draws and measurement chain).
     std::string generator = "rosin";
 };
+
+/// The options of `rosin synth-data` (parsing and --help).
+const OptionTable& synthDataOptionTable();
 
 /// args: everything after "synth-data".
 SynthDataCommandLine parseSynthDataCommandLine(const std::vector<std::string>& args);

@@ -8,7 +8,7 @@ namespace rosin::config
 {
 
 using gesture::Ramp;
-using gesture::Range;
+using physics::Range;
 
 namespace
 {

@@ -32,7 +32,7 @@ std::string describeJson(const nlohmann::json& value)
         return nlohmann::json(text).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     }
     default:
-        return value.is_number() ? gesture::formatNumber(value.get<double>()) : value.dump();
+        return value.is_number() ? physics::formatNumber(value.get<double>()) : value.dump();
     }
 }
 
@@ -56,14 +56,14 @@ void JsonObject::fail(const std::string& key, const std::string& expected, const
     throw ConfigError(file_, path(key), expected, got);
 }
 
-double JsonObject::number(const std::string& key, const gesture::Range& range) const
+double JsonObject::number(const std::string& key, const physics::Range& range) const
 {
     if (!has(key))
         fail(key, range.describe(), "nothing (the field is required)");
     return *optionalNumber(key, range);
 }
 
-std::optional<double> JsonObject::optionalNumber(const std::string& key, const gesture::Range& range) const
+std::optional<double> JsonObject::optionalNumber(const std::string& key, const physics::Range& range) const
 {
     if (!has(key))
         return std::nullopt;

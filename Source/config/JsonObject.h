@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "ConfigError.h"
-#include "gesture/GestureLimits.h"
+#include "physics/units/Range.h"
 
 namespace rosin::config
 {
@@ -29,8 +29,8 @@ class JsonObject
     std::string path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
     const std::string& file() const { return file_; }
 
-    double number(const std::string& key, const gesture::Range& range) const;
-    std::optional<double> optionalNumber(const std::string& key, const gesture::Range& range) const;
+    double number(const std::string& key, const physics::Range& range) const;
+    std::optional<double> optionalNumber(const std::string& key, const physics::Range& range) const;
     std::optional<bool> optionalBool(const std::string& key) const;
     std::optional<std::string> optionalString(const std::string& key) const;
     /// A string that must be one of `allowed`; absent gives std::nullopt.

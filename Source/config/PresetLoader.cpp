@@ -8,6 +8,7 @@
 #include "JsonFile.h"
 #include "JsonObject.h"
 #include "VoiceSetup.h"
+#include "gesture/GestureLimits.h"
 
 #ifndef ROSIN_PRESET_DIR
 #define ROSIN_PRESET_DIR "presets"
@@ -17,7 +18,7 @@ namespace rosin::config
 {
 
 namespace fs = std::filesystem;
-using gesture::Range;
+using physics::Range;
 
 namespace
 {

@@ -62,7 +62,7 @@ std::string describeStringDefaults(const Rig& rig)
     for (std::size_t i = 0; i < rig.defaultedStringFields.size(); ++i)
     {
         const auto& name = rig.defaultedStringFields[i];
-        text += (i ? ", " : "") + name + " = " + gesture::formatNumber(stringField(rig.string, name));
+        text += (i ? ", " : "") + name + " = " + physics::formatNumber(stringField(rig.string, name));
     }
     return text + " taken from the catalogue string " + std::string(kDefaultString);
 }

@@ -17,9 +17,9 @@ using config::JsonObject;
 
 namespace
 {
-constexpr Bounds kSampleRate{.min = 1000.0, .max = 384000.0, .unit = "Hz", .integer = true};
-constexpr Bounds kHighpass{.min = 0.0, .unit = "Hz"};
-constexpr Bounds kNoiseRms{.min = 0.0, .unit = "the unit of each channel"};
+constexpr Range kSampleRate{.min = 1000.0, .max = 384000.0, .unit = "Hz", .integer = true};
+constexpr Range kHighpass{.min = 0.0, .unit = "Hz"};
+constexpr Range kNoiseRms{.min = 0.0, .unit = "the unit of each channel"};
 
 Channel parseChannel(const JsonObject& c, const std::vector<Channel>& earlier)
 {

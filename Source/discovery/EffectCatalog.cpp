@@ -159,7 +159,7 @@ std::string rangeText(const EffectParameter& p)
 {
     if (!p.choices.empty())
         return "the index of one of " + std::to_string(p.choices.size()) + " choices";
-    return gesture::formatNumber(p.min) + ".." + gesture::formatNumber(p.max) + (p.unit.empty() ? "" : " ") +
+    return physics::formatNumber(p.min) + ".." + physics::formatNumber(p.max) + (p.unit.empty() ? "" : " ") +
            p.unit;
 }
 } // namespace
@@ -203,7 +203,7 @@ void applyEffect(const Effect& effect, const std::vector<double>& values, Simula
         const bool whole = p.choices.empty() || v == std::floor(v);
         if (!std::isfinite(v) || v < p.min || v > p.max || !whole)
             throw std::invalid_argument(effect.name + ": parameter " + p.name + ": expected " + rangeText(p) +
-                                        " but got " + gesture::formatNumber(v));
+                                        " but got " + physics::formatNumber(v));
     }
     effect.change(model, values);
 }
@@ -213,9 +213,9 @@ std::string formatParameterValue(const EffectParameter& p, double value)
     if (!p.choices.empty())
     {
         const auto i = static_cast<std::size_t>(value);
-        return i < p.choices.size() ? p.choices[i] : gesture::formatNumber(value);
+        return i < p.choices.size() ? p.choices[i] : physics::formatNumber(value);
     }
-    return gesture::formatNumber(value) + (p.unit.empty() ? "" : " " + p.unit);
+    return physics::formatNumber(value) + (p.unit.empty() ? "" : " " + p.unit);
 }
 
 std::string describeEffect(const Effect& effect, const std::vector<double>& values)

@@ -1,37 +1,24 @@
 #pragma once
-// Typed fields of dataset.json: numbers with the bounds the spec states, strings and arrays.
-// config::JsonObject's Range has a finite, closed maximum; the spec needs open ends ("0 < beta < 0.5"), no
-// maximum ("bowForce > 0") and integers.
+// Typed fields of dataset.json: numbers in the ranges the spec states (physics::Range: open ends as in
+// "0 < beta < 0.5", no maximum as in "bowForce > 0", integers), strings and arrays.
 #include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
 
 #include "config/JsonObject.h"
+#include "physics/units/Range.h"
 
 namespace rosin::discovery
 {
 
-struct Bounds
-{
-    double min = -std::numeric_limits<double>::infinity();
-    bool minOpen = false;
-    double max = std::numeric_limits<double>::infinity();
-    bool maxOpen = false;
-    const char* unit = "";
-    bool integer = false; ///< an integral value (44100 or 44100.0: JSON has one number type)
-    bool nonZero = false;
+using physics::Range;
 
-    bool contains(double value) const;
-    /// "a number > 0 (N)", "a number > 0 and < 0.5", "an integer in 1000..384000".
-    std::string describe() const;
-};
-
-/// The member as a number within `bounds`; throws DatasetError naming the field if absent or out of bounds.
-double requiredNumber(const config::JsonObject& object, const std::string& key, const Bounds& bounds);
+/// The member as a number within `range`; throws DatasetError naming the field if absent or out of bounds.
+double requiredNumber(const config::JsonObject& object, const std::string& key, const Range& range);
 /// As requiredNumber, but an absent member gives std::nullopt.
 std::optional<double> optionalNumber(const config::JsonObject& object, const std::string& key,
-                                     const Bounds& bounds);
+                                     const Range& range);
 /// A required string member (any text, possibly empty).
 std::string requiredString(const config::JsonObject& object, const std::string& key);
 /// A required array member with at least one element.
@@ -40,6 +27,6 @@ const nlohmann::json& requiredArray(const config::JsonObject& object, const std:
 std::string elementPath(const std::string& arrayPath, std::size_t index);
 
 /// Temperatures are in degrees Celsius; below absolute zero is a unit slip or a typo.
-inline constexpr Bounds kCelsius{.min = -273.15, .minOpen = true, .unit = "deg C"};
+inline constexpr Range kCelsius{.min = -273.15, .unit = "deg C", .minOpen = true};
 
 } // namespace rosin::discovery

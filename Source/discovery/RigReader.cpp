@@ -16,8 +16,8 @@ physics::StringParameters parseString(const JsonObject& s, std::vector<std::stri
     for (const auto& field : stringFields())
     {
         if (field.required)
-            p.*field.member = requiredNumber(s, field.name, field.bounds);
-        else if (const auto value = optionalNumber(s, field.name, field.bounds))
+            p.*field.member = requiredNumber(s, field.name, field.range);
+        else if (const auto value = optionalNumber(s, field.name, field.range))
             p.*field.member = *value;
         else
             defaulted.emplace_back(field.name);

@@ -13,7 +13,7 @@ struct StringField
 {
     const char* name;
     double physics::StringParameters::*member;
-    Bounds bounds;
+    Range range;
     bool required; ///< tension, massPerLength, length; the others default to cello-D3's values
 };
 

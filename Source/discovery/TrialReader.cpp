@@ -15,12 +15,12 @@ using config::JsonObject;
 
 namespace
 {
-constexpr Bounds kBeta{.min = 0.0, .minOpen = true, .max = 0.5, .maxOpen = true};
-constexpr Bounds kBowForce{.min = 0.0, .minOpen = true, .unit = "N"};
-constexpr Bounds kAcceleration{.unit = "m/s^2", .nonZero = true};
-constexpr Bounds kSpeed{.unit = "m/s", .nonZero = true};
+constexpr Range kBeta{.min = 0.0, .max = 0.5, .minOpen = true, .maxOpen = true};
+constexpr Range kBowForce{.min = 0.0, .unit = "N", .minOpen = true};
+constexpr Range kAcceleration{.unit = "m/s^2", .nonZero = true};
+constexpr Range kSpeed{.unit = "m/s", .nonZero = true};
 // Integers a double holds exactly, so 3 and 3.0 mean the same repeat.
-constexpr Bounds kRepeat{.min = -9007199254740992.0, .max = 9007199254740992.0, .integer = true};
+constexpr Range kRepeat{.min = -9007199254740992.0, .max = 9007199254740992.0, .integer = true};
 
 bool isIdCharacter(char c)
 {

@@ -37,7 +37,7 @@ using Kind = ParameterSpec::Kind;
 using P = ParameterIndex;
 
 // A physical quantity with a log-like taper centred where players spend their time.
-ParameterSpec physical(const char* id, const char* name, const gesture::Range& r, float defaultValue,
+ParameterSpec physical(const char* id, const char* name, const physics::Range& r, float defaultValue,
                        float centre, int decimals)
 {
     return {id, name, Kind::Continuous, r.min, r.max, defaultValue, centre, r.unit, decimals, {}};

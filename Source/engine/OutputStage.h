@@ -1,8 +1,9 @@
 #pragma once
-// What the instrument sends out (to the plugin's host, to a rendered file): the quantity the user chose (the sound the body radiates by default,
-// from the modal body or from a measured body response; the bridge force or the bridge velocity for the lab),
-// scaled to audio, DC-blocked where the quantity has a DC (the bow's static pull on the bridge), guarded
-// against non-finite values, then per block gained and soft-clipped. Real-time safe after prepare().
+// What the instrument sends out (to the plugin's host, to a rendered file): the quantity the user chose (the
+// sound the body radiates by default, from the modal body or from a measured body response; the bridge force
+// or the bridge velocity for the lab), scaled to audio, DC-blocked where the quantity has a DC (the bow's
+// static pull on the bridge), guarded against non-finite values, then per block gained and soft-clipped.
+// Real-time safe after prepare().
 #include <juce_dsp/juce_dsp.h>
 
 #include "MeasuredRadiation.h"

@@ -6,22 +6,6 @@
 namespace rosin::gesture
 {
 
-bool Range::contains(double value) const
-{
-    if (!std::isfinite(value))
-        return false;
-    const bool aboveMin = minExclusive ? value > min : value >= min;
-    return aboveMin && value <= max;
-}
-
-std::string Range::describe() const
-{
-    const std::string u = *unit ? std::string(" (") + unit + ")" : std::string();
-    if (minExclusive)
-        return "a number > " + formatNumber(min) + " and <= " + formatNumber(max) + u;
-    return "a number in " + formatNumber(min) + ".." + formatNumber(max) + u;
-}
-
 namespace
 {
 std::string describeError(const std::string& field, const std::string& expected, const std::string& got)
@@ -37,17 +21,6 @@ GestureError::GestureError(std::string field, std::string expected, std::string 
     : std::invalid_argument(describeError(field, expected, got)), field_(std::move(field)),
       expected_(std::move(expected)), got_(std::move(got))
 {
-}
-
-std::string formatNumber(double value)
-{
-    if (std::isnan(value))
-        return "nan";
-    if (std::isinf(value))
-        return value > 0 ? "inf" : "-inf";
-    char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-    return std::string(buffer, result.ptr);
 }
 
 void requireInRange(const std::string& field, double value, const Range& range)

@@ -1,26 +1,18 @@
 #pragma once
-// Valid ranges of the gesture quantities, and the error that names the offending field.
+// Valid ranges of the gesture quantities (physics::Range), and the error that names the offending field.
 // One table so the built-in specs, gesture scripts and the command line reject the same values.
 #include <stdexcept>
 #include <string>
 
 #include "GestureScript.h"
+#include "physics/units/Range.h"
 
 namespace rosin::gesture
 {
 
-/// A closed interval [min, max], or (min, max] when minExclusive.
-struct Range
-{
-    double min = 0.0;
-    double max = 0.0;
-    const char* unit = "";
-    bool minExclusive = false;
-
-    bool contains(double value) const;
-    /// "a number in 0.01..0.5", "a number > 0 and <= 600 (s)".
-    std::string describe() const;
-};
+/// The quantities' one vocabulary of ranges (physics/units/Range.h).
+using physics::formatNumber;
+using physics::Range;
 
 namespace limits
 {
@@ -48,8 +40,6 @@ class GestureError : public std::invalid_argument
     std::string field_, expected_, got_;
 };
 
-/// Shortest round-trip text of a number, for messages ("0.9", "1e-06").
-std::string formatNumber(double value);
 /// Throws GestureError(field, range.describe(), value) unless value is finite and in range.
 void requireInRange(const std::string& field, double value, const Range& range);
 /// Checks every segment's values and the bow speed that acceleration segments reach, starting from `start`.

@@ -21,7 +21,8 @@ TEST(RigPreset, CantileverIsSeed000sRig)
     EXPECT_DOUBLE_EQ(p.rig->oscillator.qualityFactor, 20.0); // seed 000: Q 20
     EXPECT_DOUBLE_EQ(p.rig->normalForce, 6.3);               // seed 000 Fig. 2
     EXPECT_DOUBLE_EQ(p.rig->rodSpeed, 0.042);
-    // The calibrated mass of OscillatorRigParameters (tests/rig/TraditionalCurveRigTest.cpp reproduces it).
+    // The calibrated mass of OscillatorRigParameters (tests/physics/rig/TraditionalCurveRigTest.cpp
+    // reproduces it).
     EXPECT_DOUBLE_EQ(p.rig->oscillator.modalMass, physics::OscillatorRigParameters{}.modalMass);
     EXPECT_EQ(p.friction, "classical"); // eq. 2, the traditional curve
     const VoiceSetup s = buildVoiceSetup(p);

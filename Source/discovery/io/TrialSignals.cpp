@@ -81,7 +81,7 @@ void checkLayout(const std::string& name, const juce::AudioFormatReader& reader,
         throw DatasetError(name, "",
                            "a sample rate of " + std::to_string(dataset.sampleRate) +
                                " Hz (dataset.json \"sampleRate\")",
-                           gesture::formatNumber(reader.sampleRate) + " Hz");
+                           physics::formatNumber(reader.sampleRate) + " Hz");
 }
 
 // JUCE zero-fills what a truncated file lacks; the RIFF chunk sizes show it.
@@ -157,7 +157,7 @@ TrialSignals readTrialSignals(const Dataset& dataset, const Trial& trial)
             {
                 if (!std::isfinite(in[n]))
                     throw DatasetError(name, "", "finite sample values",
-                                       gesture::formatNumber(in[n]) + " at frame " +
+                                       physics::formatNumber(in[n]) + " at frame " +
                                            std::to_string(start + n) + " of channel " +
                                            dataset.channels[static_cast<std::size_t>(c)].name);
                 out[start + static_cast<std::size_t>(n)] = in[n];
@@ -192,7 +192,7 @@ std::vector<std::vector<float>> toFloat(const std::string& name, const Dataset& 
             out[c][n] = static_cast<float>(channels[c][n]);
             if (!std::isfinite(out[c][n]))
                 throw DatasetError(name, "", "values finite as 32-bit floats",
-                                   gesture::formatNumber(channels[c][n]) + " at frame " + std::to_string(n) +
+                                   physics::formatNumber(channels[c][n]) + " at frame " + std::to_string(n) +
                                        " of channel " + dataset.channels[c].name);
         }
     }

@@ -65,7 +65,7 @@ std::string describeScan(const scan::ScanSpec& s, const config::Preset& preset)
     text += guettler
                 ? std::to_string(s.second.size()) + " accelerations (constant-acceleration starts from rest)"
                 : std::to_string(s.betas.size()) + " bow positions at a steady " +
-                      gesture::formatNumber(s.second.front()) + " m/s";
+                      physics::formatNumber(s.second.front()) + " m/s";
     if (guettler)
         text += " at " + std::to_string(s.betas.size()) + " bow position(s)";
     return text + "; open string " + preset.string.name + " on the " + preset.body + " body; bowing machine";

@@ -68,9 +68,9 @@ void applyTrialFault(const TrialFault& fault, double sampleRate, std::vector<std
 std::string describeTrialFault(const TrialFault& fault)
 {
     if (fault.kind == TrialFault::Kind::CutShort)
-        return "cut short at " + gesture::formatNumber(std::round(fault.start * 1e4) / 1e4) + " s";
-    return "dropout " + gesture::formatNumber(std::round(fault.start * 1e4) / 1e4) + "-" +
-           gesture::formatNumber(std::round((fault.start + fault.length) * 1e4) / 1e4) + " s";
+        return "cut short at " + physics::formatNumber(std::round(fault.start * 1e4) / 1e4) + " s";
+    return "dropout " + physics::formatNumber(std::round(fault.start * 1e4) / 1e4) + "-" +
+           physics::formatNumber(std::round((fault.start + fault.length) * 1e4) / 1e4) + " s";
 }
 
 } // namespace rosin::discovery

@@ -82,17 +82,15 @@ void VoiceLanes::restoreLane(int l, const LaneState& state, double scale) noexce
 // BowedStringVoice::step() lane by lane: solveJunction(in, 0), G = R / (1 + c), finishStep(G), body advance.
 void VoiceLanes::step(const LaneBowInput& in, std::array<VoiceSample, kLanes>& out) noexcept
 {
-    const double PL = c_.tensionPerLength, beta = c_.beta;
+    const JunctionTerms& j = c_.junction;
     LaneJunctionInput junction;
-    junction.loadSlope = 1.0 / c_.y0;
+    junction.loadSlope = 1.0 / j.y0;
+    std::array<JunctionHistories, kLanes> histories;
     for (int l = 0; l < kLanes; ++l)
     {
-        const double uddh = h_.uddh[l];
-        const double Fh = (-PL * h_.uh[l] - c_.M3 * uddh - h_.Sa[l]) / c_.D;
-        const double vh = h_.Sv[l] + h_.Tv[l] - c_.Bv * (uddh + c_.U2 * Fh) +
-                          (1.0 - beta) * (h_.udh[l] + c_.U1 * Fh) -
-                          c_.bandCorrection * h_.previousFriction[l];
-        junction.dvHistory[l] = vh - in.bowVelocity[l];
+        histories[l] = {
+            h_.Sv[l], h_.Sa[l], h_.Tv[l], h_.uh[l], h_.udh[l], h_.uddh[l], h_.previousFriction[l]};
+        junction.dvHistory[l] = j.loadLineHistory(histories[l], 0.0) - in.bowVelocity[l];
         junction.bowForce[l] = std::max(0.0, in.bowForce[l]);
     }
     LaneJunctionSolution solution;
@@ -102,11 +100,11 @@ void VoiceLanes::step(const LaneBowInput& in, std::array<VoiceSample, kLanes>& o
     for (int l = 0; l < kLanes; ++l)
     {
         const double f = solution[l].frictionForce;
-        const double R = (1.0 - beta - c_.A1) * f - PL * h_.uh[l] - c_.M3 * h_.uddh[l] - h_.Sa[l];
-        const double G = R / (1.0 + c_.bridgeCoupling);
-        F[l] = R - c_.bridgeCoupling * G;
+        const double R = j.bridgeForceBeforeCoupling(f, histories[l]);
+        const double G = R / (1.0 + j.bridgeCoupling);
+        F[l] = R - j.bridgeCoupling * G;
         force.v[l] = static_cast<ModalReal>(f);
-        bridgeAcceleration.v[l] = static_cast<ModalReal>(-(h_.uddh[l] + c_.U2 * G));
+        bridgeAcceleration.v[l] = static_cast<ModalReal>(-(h_.uddh[l] + j.U2 * G));
         bridgeForce.v[l] = static_cast<ModalReal>(G);
         h_.previousFriction[l] = f;
     }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "../friction/FrictionCurves.h"
+#include "../numeric/BracketedRoot.h"
 #include "../thermal/HeatBalance.h"
 #include "OscillatorRigParameters.h"
 
@@ -55,12 +56,8 @@ double contactRadiusForSteadyTemperature(double targetKelvin, double speed, doub
     if (!(temperature(small) > targetKelvin && temperature(large) < targetKelvin))
         throw std::runtime_error(
             "contactRadiusForSteadyTemperature: target not reachable with radii 1 um..10 mm");
-    for (int it = 0; it < 100 && large / small > 1.0 + 1e-10; ++it)
-    {
-        const double mid = std::sqrt(small * large);
-        (temperature(mid) > targetKelvin ? small : large) = mid;
-    }
-    return std::sqrt(small * large);
+    return bisectGeometric([&](double radius) { return temperature(radius) > targetKelvin; }, small, large,
+                           1e-10, 100);
 }
 
 } // namespace rosin::physics

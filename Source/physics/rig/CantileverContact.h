@@ -6,7 +6,8 @@
 // Its size follows the seed: "radius and thickness of the 'melted' layer ... determined by requiring that the
 // contact temperature would be around 55 K above ambient during steady sliding at the assumed rod speed".
 // One condition, two unknowns: the layer keeps seed 001 Table 2's steady-sliding value (10 um) and the radius
-// at the rig's 6.3 N is solved for (contactRadiusForSteadyTemperature; tests/rig/CantileverContactTest.cpp).
+// at the rig's 6.3 N is solved for (contactRadiusForSteadyTemperature;
+// tests/physics/rig/CantileverContactTest.cpp).
 #include "../thermal/ContactParameters.h"
 
 namespace rosin::physics

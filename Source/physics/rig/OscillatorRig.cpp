@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "../units/Range.h"
+
 namespace rosin::physics
 {
 
@@ -13,8 +15,10 @@ void OscillatorRig::prepare(const OscillatorRigParameters& rig, std::unique_ptr<
 {
     if (!friction)
         throw std::invalid_argument("OscillatorRig::prepare: a friction law is required");
-    if (!(sampleRate >= 8000.0 && sampleRate <= 384000.0))
-        throw std::invalid_argument("OscillatorRig::prepare: sample rate must be 8000..384000 Hz");
+    if (!(sampleRate >= limits::sampleRate.min && sampleRate <= limits::sampleRate.max))
+        throw std::invalid_argument("OscillatorRig::prepare: sample rate must be " +
+                                    formatNumber(limits::sampleRate.min) + ".." +
+                                    formatNumber(limits::sampleRate.max) + " Hz");
     rig.validate();
     rig_ = rig;
     sampleRate_ = sampleRate;

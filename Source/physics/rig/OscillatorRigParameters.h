@@ -12,7 +12,7 @@ struct OscillatorRigParameters
     double qualityFactor = 20.0; ///< Q = m omega0 / R (seed 000: Q 20 for the first two bending modes)
     /// m, kg. Not in the seed: chosen so that the traditional curve (seed 000 eq. 2) gives stick-slip at
     /// 34 Hz with N = 6.3 N and v_rod = 0.042 m/s, as the seed reports. Found by bisection
-    /// (calibrateModalMass, RigCalibration.h; reproduced by tests/rig/TraditionalCurveRigTest.cpp).
+    /// (calibrateModalMass, RigCalibration.h; reproduced by tests/physics/rig/TraditionalCurveRigTest.cpp).
     double modalMass = 0.0216;
 
     double angularFrequency() const; ///< omega0, rad/s

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "../friction/CurveFrictionLaw.h"
+#include "../numeric/BracketedRoot.h"
 
 namespace rosin::physics
 {
@@ -69,12 +70,7 @@ double calibrateModalMass(const OscillatorRigParameters& rig, double targetHz, d
                                  std::to_string(flo) + " Hz (" + std::to_string(lo) + " kg) and " +
                                  std::to_string(fhi) + " Hz (" + std::to_string(hi) + " kg)");
     // The measured frequency is quantised by the sample period, so 30 halvings of the log range are plenty.
-    for (int it = 0; it < 30 && hi / lo > 1.0 + 1e-5; ++it)
-    {
-        const double mid = std::sqrt(lo * hi);
-        (frequencyAt(mid) < targetHz ? lo : hi) = mid;
-    }
-    return std::sqrt(lo * hi);
+    return bisectGeometric([&](double mass) { return frequencyAt(mass) < targetHz; }, lo, hi, 1e-5, 30);
 }
 
 } // namespace rosin::physics

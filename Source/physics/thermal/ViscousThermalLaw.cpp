@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "../numeric/BracketedRoot.h"
+
 namespace rosin::physics
 {
 
@@ -72,30 +74,7 @@ JunctionSolution ViscousThermalLaw::solve(const JunctionInput& in) noexcept
             lo = heat.predict(0.0, std::abs(dvh), Fb); // g(lo) >= 0
             glo = residual(lo);
         }
-        // Illinois false position; keeps the bracket, converges superlinearly.
-        int side = 0;
-        double T = glo == 0.0 ? lo : ghi == 0.0 ? hi : Tcorr;
-        for (int it = 0; it < 60 && glo > 0.0 && ghi < 0.0; ++it)
-        {
-            T = (lo * ghi - hi * glo) / (ghi - glo);
-            const double gT = residual(T);
-            if (std::abs(gT) <= 1e-9 * (1.0 + T) || hi - lo <= 1e-12 * (1.0 + hi))
-                break;
-            if (gT > 0.0)
-            {
-                lo = T, glo = gT;
-                if (side == 1)
-                    ghi *= 0.5;
-                side = 1;
-            }
-            else
-            {
-                hi = T, ghi = gT;
-                if (side == -1)
-                    glo *= 0.5;
-                side = -1;
-            }
-        }
+        const double T = illinoisRoot(residual, lo, glo, hi, ghi, Tcorr, {1e-9, 1e-12}, 60);
         residual(T); // leaves s at the solution for T
     }
     thermal_.commit(s, Fb);

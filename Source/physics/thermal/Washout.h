@@ -9,7 +9,7 @@
 // The exponential washout's limit is A e sqrt(v / ell) (int_0^inf e^{-v t / ell} / sqrt(pi t) dt =
 // sqrt(ell / v)), so ell = a / 0.8879^2 = 1.2685 a: about one contact width (2a), as §2.3a says.
 // (Reference §2.3's quasi-steady pi a^2 e sqrt(3 v / (8 a)), quoted from WG25 via a secondary source and
-// argued from a penetration depth, is 31 % below this exact limit; tests/thermal/WashoutTest.cpp.)
+// argued from a penetration depth, is 31 % below this exact limit; tests/physics/thermal/WashoutTest.cpp.)
 // Both functions take x = |dv| dt / ell, the share of a washout length slid in one time step; they are
 // shared by HeatBalance and PlasticLanes so that a lane and a voice step identically.
 #include <cmath>

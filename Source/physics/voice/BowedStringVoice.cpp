@@ -7,6 +7,7 @@
 
 #include "../body/BridgeBody.h"
 #include "../modal/ModalKernels.h"
+#include "../units/Range.h"
 
 namespace rosin::physics
 {
@@ -40,14 +41,13 @@ struct BowedStringVoice::Impl
     std::vector<ModalReal> aIn, bIn, torsIn; // aN, bN, torsGain in the modal kernels' number type
     OutputWeights transVel, transAcc, torsVel;
 
-    // Direct (instantaneous) coefficients of the coupled bow/bridge solve.
-    double Bv = 0, U0 = 0, U1 = 0, U2 = 0, M3 = 0, D = 1, kappa = 0, y0 = 1, A1 = 0;
-    double bridgeCoupling = 0; ///< c = (P/L) U0 + M3 U2: F = R - c G, G the total bridge force
+    // Direct (instantaneous) coefficients of the coupled bow/bridge solve (JunctionTerms.h), the full-band
+    // correction of the bow admittance c (1 - z^-1) included: see updateWeights().
+    JunctionTerms j;
     // This sample's junction, between solveJunction() and finishStep().
     JunctionSolution solution;
     double bowVelocity = 0;
-    // Full-band correction of the bow admittance, c (1 - z^-1): see updateWeights().
-    double bandCorrection = 0.0, previousFriction = 0.0;
+    double previousFriction = 0.0;
     // Histories: outputs of the state before the current input.
     double Sv = 0, Sa = 0, Tv = 0;
     // Last step's inputs (energy and displacement inspection).
@@ -62,6 +62,17 @@ struct BowedStringVoice::Impl
     void setPosition(double newBeta, double finger);
     void clearState();
     double energy() const;
+    /// The junction's histories now: the string's and the body's.
+    JunctionHistories histories() const noexcept
+    {
+        return {Sv,
+                Sa,
+                Tv,
+                body->displacementHistory(),
+                body->velocityHistory(),
+                body->accelerationHistory(),
+                previousFriction};
+    }
 };
 
 void BowedStringVoice::Impl::computeTransSpecs()
@@ -145,9 +156,7 @@ void BowedStringVoice::Impl::updateWeights()
 {
     const double m = string.massPerLength, P = string.tension, L = length;
     const double mL = m * L;
-    double B1 = 0, Ya = 0;
-    A1 = 0;
-    Bv = 0;
+    double B1 = 0, Ya = 0, A1 = 0, Bv = 0;
     for (int i = 0; i < trans.size(); ++i)
     {
         const int n = i + 1;
@@ -180,16 +189,16 @@ void BowedStringVoice::Impl::updateWeights()
         torsVel.set(i, rv);
         Ya += phi * tors.direct(i, ModalOutput::Velocity) * torsGain[i];
     }
-    U0 = body->displacementDirect();
-    U1 = body->velocityDirect();
-    U2 = body->accelerationDirect();
+    const double U0 = body->displacementDirect();
+    const double U1 = body->velocityDirect();
+    const double U2 = body->accelerationDirect();
     // Bridge force F = (1-beta) f - (P/L) u - (mL/3) u'' - sum_n c_n q''_n, with every term = history +
     // direct.
-    M3 = mL / 3.0 - B1;
-    bridgeCoupling = (P / L) * U0 + M3 * U2;
-    D = 1.0 + bridgeCoupling;
-    kappa = (1.0 - beta - A1) / D;
-    y0 = Ya - Bv * U2 * kappa + (1.0 - beta) * U1 * kappa;
+    const double M3 = mL / 3.0 - B1;
+    const double bridgeCoupling = (P / L) * U0 + M3 * U2; // c: F = R - c G, G the total bridge force
+    const double D = 1.0 + bridgeCoupling;
+    const double kappa = (1.0 - beta - A1) / D;
+    double y0 = Ya - Bv * U2 * kappa + (1.0 - beta) * U1 * kappa;
     // A string answers a sudden force at a point with v = f / (2 Z_eff) at once (McIntyre, Schumacher &
     // Woodhouse; reference eq. 1.2). The modal bank stops at 0.45 fs, so it spreads that delta over two
     // samples and its admittance almost vanishes at Nyquist: a sticking contact (a velocity constraint) then
@@ -198,8 +207,9 @@ void BowedStringVoice::Impl::updateWeights()
     // low frequency is unchanged, and Re c (1 - e^-iwT) >= 0 keeps the bow port passive.
     const double Z0 = string.impedance();
     const double Zeff = torsionOn ? Z0 * string.torsionalImpedance / (Z0 + string.torsionalImpedance) : Z0;
-    bandCorrection = std::max(0.0, 1.0 / (2.0 * Zeff) - y0);
+    const double bandCorrection = std::max(0.0, 1.0 / (2.0 * Zeff) - y0);
     y0 += bandCorrection;
+    j = {beta, P / L, M3, D, A1, Bv, U0, U1, U2, y0, bandCorrection, bridgeCoupling};
 }
 
 void BowedStringVoice::Impl::clearState()
@@ -219,8 +229,10 @@ void BowedStringVoice::prepare(const VoiceConfig& config, std::unique_ptr<Fricti
 {
     if (!friction)
         throw std::invalid_argument("BowedStringVoice::prepare: a friction law is required");
-    if (!(sampleRate >= 8000.0 && sampleRate <= 384000.0))
-        throw std::invalid_argument("BowedStringVoice::prepare: sample rate must be 8000..384000 Hz");
+    if (!(sampleRate >= limits::sampleRate.min && sampleRate <= limits::sampleRate.max))
+        throw std::invalid_argument("BowedStringVoice::prepare: sample rate must be " +
+                                    formatNumber(limits::sampleRate.min) + ".." +
+                                    formatNumber(limits::sampleRate.max) + " Hz");
     config_ = config;
     sampleRate_ = sampleRate;
     auto& s = *impl_;
@@ -255,7 +267,7 @@ VoiceSample BowedStringVoice::step(const BowInput& in) noexcept
 {
     const double R = solveJunction(in, 0.0);
     // Alone on its body, the string's force is the whole bridge force: G = R - c G.
-    const double G = R / (1.0 + impl_->bridgeCoupling);
+    const double G = R / (1.0 + impl_->j.bridgeCoupling);
     const VoiceSample out = finishStep(G);
     if (impl_->body == &impl_->ownBody)
         impl_->ownBody.advance(recovered_ ? 0.0 : G);
@@ -308,11 +320,7 @@ VoiceCoefficients BowedStringVoice::coefficients() const noexcept
     c.transverseAcceleration = &s.transAcc;
     c.torsionalVelocity = &s.torsVel;
     c.body = s.body;
-    c.beta = s.beta;
-    c.tensionPerLength = s.string.tension / s.length;
-    c.M3 = s.M3, c.D = s.D, c.A1 = s.A1, c.Bv = s.Bv;
-    c.U1 = s.U1, c.U2 = s.U2; // U0 drops out: a single string has no other strings' force G0
-    c.y0 = s.y0, c.bandCorrection = s.bandCorrection, c.bridgeCoupling = s.bridgeCoupling;
+    c.junction = s.j;
     return c;
 }
 
@@ -321,38 +329,29 @@ double BowedStringVoice::solveJunction(const BowInput& in, double otherStringsFo
     auto& s = *impl_;
     recovered_ = false;
     s.applyControl(in);
-    const double P = s.string.tension, L = s.length;
-    const double uh = s.body->displacementHistory(), udh = s.body->velocityHistory();
-    const double uddh = s.body->accelerationHistory();
     // What the bridge does this sample apart from this string's own force: the body's history plus its
     // instantaneous answer to the other strings' forces (predicted by the caller).
-    const double G0 = otherStringsForce;
-    const double uE = uh + s.U0 * G0, udE = udh + s.U1 * G0, uddE = uddh + s.U2 * G0;
-    const double Fh = (-(P / L) * uE - s.M3 * uddE - s.Sa) / s.D;
-    const double vh = s.Sv + s.Tv - s.Bv * (uddE + s.U2 * Fh) + (1.0 - s.beta) * (udE + s.U1 * Fh) -
-                      s.bandCorrection * s.previousFriction;
+    const JunctionHistories h = s.histories();
+    const double vh = s.j.loadLineHistory(h, otherStringsForce);
     s.bowVelocity = in.bowVelocity;
-    s.solution = friction_->solve({vh - in.bowVelocity, 1.0 / s.y0, std::max(0.0, in.bowForce)});
+    s.solution = friction_->solve({vh - in.bowVelocity, 1.0 / s.j.y0, std::max(0.0, in.bowForce)});
     // Bridge force F = R - c G, G the total force on the bridge (reference §5.1, one string per port).
-    const double f = s.solution.frictionForce;
-    return (1.0 - s.beta - s.A1) * f - (P / L) * uh - s.M3 * uddh - s.Sa;
+    return s.j.bridgeForceBeforeCoupling(s.solution.frictionForce, h);
 }
 
 double BowedStringVoice::bridgeCoupling() const noexcept
 {
-    return impl_->bridgeCoupling;
+    return impl_->j.bridgeCoupling;
 }
 
 VoiceSample BowedStringVoice::finishStep(double totalBridgeForce) noexcept
 {
     auto& s = *impl_;
-    const double P = s.string.tension, L = s.length;
     const double G = totalBridgeForce;
     const double f = s.solution.frictionForce;
-    const double R = (1.0 - s.beta - s.A1) * f - (P / L) * s.body->displacementHistory() -
-                     s.M3 * s.body->accelerationHistory() - s.Sa;
-    const double F = R - s.bridgeCoupling * G;
-    const double udd = s.body->accelerationHistory() + s.U2 * G;
+    const JunctionHistories h = s.histories();
+    const double F = s.j.bridgeForceBeforeCoupling(f, h) - s.j.bridgeCoupling * G;
+    const double udd = h.udd + s.j.U2 * G;
 
     const TwoSums st =
         advanceTwoInputsTwoOutputs(s.trans, s.aIn.data(), f, s.bIn.data(), -udd, s.transVel, s.transAcc);
@@ -397,7 +396,7 @@ int BowedStringVoice::bodyModeCount() const noexcept
 }
 double BowedStringVoice::instantaneousAdmittance() const noexcept
 {
-    return impl_->y0;
+    return impl_->j.y0;
 }
 
 std::vector<double> BowedStringVoice::transverseModeFrequencies() const

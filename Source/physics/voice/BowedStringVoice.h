@@ -15,6 +15,7 @@
 
 #include "../friction/FrictionLaw.h"
 #include "../modal/ModalKernels.h"
+#include "JunctionTerms.h"
 #include "VoiceConfig.h"
 
 namespace rosin::physics
@@ -36,9 +37,7 @@ struct VoiceCoefficients
     const OutputWeights* transverseAcceleration = nullptr; ///< bridge-force history Sa
     const OutputWeights* torsionalVelocity = nullptr;      ///< Tv
     const BridgeBody* body = nullptr;
-    // The per-sample solve (BowedStringVoice.cpp): F = R - c G, v = v_h + y0 f.
-    double beta = 0.1, tensionPerLength = 0.0, M3 = 0.0, D = 1.0, A1 = 0.0, Bv = 0.0;
-    double U1 = 0.0, U2 = 0.0, y0 = 1.0, bandCorrection = 0.0, bridgeCoupling = 0.0;
+    JunctionTerms junction; ///< the per-sample solve: v = v_h + y0 f, F = R - c G
 };
 
 /// Per-sample bow input, already smoothed (see BowGesture), SI units.
