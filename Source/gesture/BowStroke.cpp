@@ -83,20 +83,20 @@ physics::BowInput BowStroke::next(const StrokeTargets& targets) noexcept
         // Division by the rate, as in BowGesture: v = v0 + d a (k / fs) exactly.
         const double t = static_cast<double>(phaseSample_++) / sampleRate_;
         double v = startVelocity_ + direction_ * acceleration_ * t;
-        if (direction_ * v >= targets.speed)
+        if (direction_ * v >= targets.bowSpeed)
         {
-            v = direction_ * targets.speed;
+            v = direction_ * targets.bowSpeed;
             phase_ = Phase::Sustain;
             speedSmoother_.snapTo(v);
         }
         velocity_ = v;
-        force_ = forceSmoother_.process(targets.force * attackForceMultiplier_);
+        force_ = forceSmoother_.process(targets.bowForce * attackForceMultiplier_);
         break;
     }
     case Phase::Sustain:
         attackForceMultiplier_ += relaxCoefficient_ * (1.0 - attackForceMultiplier_);
-        velocity_ = speedSmoother_.process(direction_ * targets.speed);
-        force_ = forceSmoother_.process(targets.force * attackForceMultiplier_);
+        velocity_ = speedSmoother_.process(direction_ * targets.bowSpeed);
+        force_ = forceSmoother_.process(targets.bowForce * attackForceMultiplier_);
         break;
     case Phase::Release:
     {

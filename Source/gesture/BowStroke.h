@@ -31,8 +31,8 @@ struct StrokeSettings
 /// What the controller wants for this string now (before smoothing), SI units.
 struct StrokeTargets
 {
-    double force = 0.0; ///< nominal force, N
-    double speed = 0.0; ///< |v_b| to sustain, m/s (> 0)
+    double bowForce = 0.0; ///< nominal force, N
+    double bowSpeed = 0.0; ///< |v_b| to sustain, m/s (> 0)
     double beta = 0.1;
     double finger = 1.0; ///< vibrating / open length
 };

@@ -218,8 +218,9 @@ void MidiGestureController::next(physics::BowInput* inputs) noexcept
         const ChannelControls c = channels_.controls(s.channel);
         const double pressure = s.polyPressure >= 0.0 ? s.polyPressure : c.pressure;
         StrokeTargets t;
-        t.force = std::clamp(p.bowForce * (c.force * pressure), ranges::bowForce.min, ranges::bowForce.max);
-        t.speed = std::clamp(p.bowSpeed * c.speed, ranges::bowSpeed.min, ranges::bowSpeed.max);
+        t.bowForce =
+            std::clamp(p.bowForce * (c.force * pressure), ranges::bowForce.min, ranges::bowForce.max);
+        t.bowSpeed = std::clamp(p.bowSpeed * c.speed, ranges::bowSpeed.min, ranges::bowSpeed.max);
         t.beta = std::clamp(p.beta * c.beta, ranges::beta.min, ranges::beta.max);
         t.finger = std::clamp(s.finger * c.finger, 0.1, 1.0);
         inputs[i] = s.stroke.next(t);
