@@ -117,6 +117,12 @@ nlohmann::json discoveryJson(const Discovery& d, const Dataset& dataset)
                               {"alpha", s.alpha},
                               {"evidence", describeEvidence(s.chosen, s.alpha)},
                               {"tried", tried(s.tried)}});
+        if (s.rival)
+            j["steps"].back()["rival"] = {{"effect", s.tried[s.rival->index].effect->name},
+                                          {"heldOutGain", s.tried[s.rival->index].heldOutGain},
+                                          {"pValue", s.rival->test.pValue},
+                                          {"decided", s.rival->decided()},
+                                          {"evidence", describeRival(s)}};
     }
     if (!d.search.lastTried.empty())
         j["notAdopted"] = tried(d.search.lastTried);
@@ -254,6 +260,8 @@ std::string discoveryMarkdown(const Discovery& d, const Dataset& dataset,
              "). Fitted: " + describeEffect(*s.chosen.effect, s.chosen.values) +
              ". Gap after this step: " + number(d.stepGaps[k].overall) +
              ".\n\nWhy: " + describeEvidence(s.chosen, s.alpha) + ".\n\n";
+        if (s.rival)
+            m += "Against the " + describeRival(s) + ".\n\n";
         m += "Candidates (held-out gain, p):";
         for (const auto& t : s.tried)
             m += " " + t.effect->name + " " + number(100.0 * t.heldOutGain, "%.0f") + " % (" +

@@ -133,11 +133,13 @@ EffectScore score(const SearchInputs& in, const CurrentModel& current, const std
         if (e0[i] != 0.0 || e1[i] != 0.0)
             d.push_back(e0[i] - e1[i]);
     }
+    s.heldOutShares = e1;
     s.heldOutGain = before > 0.0 ? 1.0 - after / before : 0.0;
     s.pValue = signFlipTest(d, in.seed + effectIndex(effect)).pValue;
     s.significant = s.pValue < alpha && s.heldOutGain >= kMinRelativeGain;
     return s;
 }
+
 } // namespace
 
 void splitTrials(const ScanGrid& grid, std::vector<std::size_t>& training, std::vector<std::size_t>& heldOut)
@@ -219,6 +221,11 @@ SearchResult searchEffects(const SearchInputs& in, const SimulationModel& baseli
         step.chosen = *best;
         step.tried = tried;
         step.alpha = alpha;
+        step.rival = rivalOf(tried, *best, in.seed);
+        if (in.log && step.rival)
+            *in.log << "  step " << result.steps.size() + 1 << ": " << best->effect->name << " against the "
+                    << describeRival(step) << "\n"
+                    << std::flush;
         applyEffect(*best->effect, best->values, result.model);
         result.model.nuisance = best->nuisance;
         startNuisance = best->nuisance;
@@ -255,6 +262,42 @@ std::string describeEvidence(const EffectScore& s, double alpha)
                   "(threshold %.2g)",
                   100.0 * s.heldOutGain, s.pValue, alpha);
     return text + tail;
+}
+
+std::optional<StepRival> rivalOf(const std::vector<EffectScore>& tried, const EffectScore& chosen,
+                                 std::uint64_t seed)
+{
+    std::optional<StepRival> rival;
+    for (std::size_t k = 0; k < tried.size(); ++k)
+        if (tried[k].significant && tried[k].effect != chosen.effect &&
+            (!rival || tried[k].heldOutGain > tried[rival->index].heldOutGain))
+            rival = StepRival{k, {}};
+    if (!rival)
+        return rival;
+    const auto& other = tried[rival->index].heldOutShares;
+    std::vector<double> d;
+    for (std::size_t i = 0; i < other.size() && i < chosen.heldOutShares.size(); ++i)
+        if (other[i] != 0.0 || chosen.heldOutShares[i] != 0.0)
+            d.push_back(other[i] - chosen.heldOutShares[i]);
+    rival->test = signFlipTest(d, seed + 7919 * (effectIndex(*chosen.effect) + 1));
+    return rival;
+}
+
+std::string describeRival(const SearchStep& step)
+{
+    if (!step.rival)
+        return "";
+    const EffectScore& r = step.tried[step.rival->index];
+    char text[400];
+    std::snprintf(
+        text, sizeof(text),
+        "runner-up %s (held-out gain %+.1f %%, p = %.2g); paired sign-flip test of %s against it on "
+        "the held-out trials p = %.2g: %s",
+        r.effect->name.c_str(), 100.0 * r.heldOutGain, r.pValue, step.chosen.effect->name.c_str(),
+        step.rival->test.pValue,
+        step.rival->decided() ? "the data prefer the named effect"
+                              : "the data do not decide between the two");
+    return text;
 }
 
 } // namespace rosin::discovery

@@ -28,12 +28,14 @@
 //          the adopted effects is 0 (within the measurement's scatter on every feature).
 // JUCE-free.
 #include <cstdint>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "Calibration.h"
 #include "GapMeasure.h"
+#include "PairedTest.h"
 #include "SearchInputs.h"
 #include "discovery/Dataset.h"
 #include "discovery/EffectCatalog.h"
@@ -60,6 +62,19 @@ struct EffectScore
     double pValue = 1.0;
     bool significant = false;
     GapSummary heldOutBefore, heldOutAfter;
+    std::vector<double> heldOutShares; ///< each held-out trial's share of the objective with the effect
+};
+
+/// The runner-up of a step: the best other candidate that was significant too, and the paired sign-flip
+/// test between the two on the held-out trials (the chosen one's shares against the rival's). Two effects
+/// of the catalog can leave alike traces in a scan (a saturating ageing with a long onset and a margin
+/// released by the first slip both raise mostly the first slip's static friction), and a user must see when
+/// the data named one only by a hair.
+struct StepRival
+{
+    std::size_t index = 0; ///< into SearchStep::tried
+    PairedTestResult test; ///< one-sided: the chosen effect explains the held-out trials better
+    bool decided() const noexcept { return test.pValue < kSignificanceLevel; }
 };
 
 struct SearchStep
@@ -67,7 +82,8 @@ struct SearchStep
     EffectScore chosen;
     std::vector<EffectScore> tried; ///< every candidate of the step, in catalog order
     double alpha = kSignificanceLevel;
-    SimulationModel model; ///< the model after the step (the effect applied)
+    SimulationModel model;          ///< the model after the step (the effect applied)
+    std::optional<StepRival> rival; ///< none when no other candidate was significant
 };
 
 struct SearchResult
@@ -96,5 +112,15 @@ SearchResult searchEffects(const SearchInputs& inputs, const SimulationModel& ba
 
 /// Why the evidence points to the effect, in words (held-out features that improved, the test).
 std::string describeEvidence(const EffectScore& score, double alpha);
+
+/// The best significant candidate in `tried` other than `chosen` and the paired sign-flip test of the
+/// chosen one against it on their held-out shares (trials where both are 0 left out); none when no other
+/// candidate was significant. `seed` seeds the test's flips.
+std::optional<StepRival> rivalOf(const std::vector<EffectScore>& tried, const EffectScore& chosen,
+                                 std::uint64_t seed);
+
+/// The runner-up in words ("" when there is none): its gain, the test between the two, and whether the data
+/// decide between them.
+std::string describeRival(const SearchStep& step);
 
 } // namespace rosin::discovery
