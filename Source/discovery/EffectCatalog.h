@@ -9,6 +9,9 @@
 //                        or saturating, mu_s0 (1 + growth (1 - exp(-t_h / tau_c)));
 //                        physics::JunctionGrowthLaw around the preset's law. Parameters: growth
 //                        (dimensionless, beta_a / mu_s0), onsetTime (tau_c, s), ageingForm (a choice).
+//                        Fitted as (gain after a 50 ms hold, onsetTime, ageingForm): a Guettler scan's
+//                        first slips pin the gain at their hold times (tens of ms), i.e. growth and onset
+//                        only along a curve (growth x ln(1 + t / tau_c) about constant).
 //   breakaway-jump       an abrupt release at the first slip while the rosin is cold: the modified thermal
 //                        law of seed 002 (eq. 6 with the jump curve of eq. 12 bow / eq. 13 rod) replaces the
 //                        preset's law. Parameter: jumpCurve, a choice of "rod" or "bow".
@@ -46,7 +49,18 @@ struct Effect
     std::vector<EffectParameter> parameters;
     /// Changes `model` as the header describes; `values` in parameter order, already checked.
     void (*change)(SimulationModel& model, const std::vector<double>& values);
+    /// The coordinates rosin discover's fit searches where they are not `parameters` themselves (empty: they
+    /// are; else as many, choices in the same places), and the map from a point of them to the parameters'
+    /// values. For parameters that the data pin only in a combination: the fit steps along one coordinate
+    /// at a time, which crosses a valley lying diagonally to them without following it.
+    std::vector<EffectParameter> searchParameters{};
+    std::vector<double> (*fromSearch)(const std::vector<double>& searchValues) = nullptr;
 };
+
+/// The coordinates a fit of `effect` searches: searchParameters, or parameters where there are none.
+const std::vector<EffectParameter>& fitCoordinates(const Effect& effect);
+/// The effect's parameter values at a point of its fit coordinates.
+std::vector<double> parameterValues(const Effect& effect, const std::vector<double>& searchValues);
 
 /// The six effects, in issue 5's order.
 const std::vector<Effect>& effectCatalog();

@@ -140,7 +140,11 @@ TEST_P(DiscoverHiddenEffect, IsNamedFirstAndAtLeastHalvesTheGap)
 // 0.2-1.2 N gives 31 % and p = 5e-5, gain +64 %.)
 INSTANTIATE_TEST_SUITE_P(EveryEffect, DiscoverHiddenEffect,
                          ::testing::Values(HiddenEffect{"junction-growth",
-                                                        "junction-growth:growth=0.3,onsetTime=0.003", "3"},
+                                                        "junction-growth:growth=0.3,onsetTime=0.003",
+                                                        "3",
+                                                        {"--beta", "0.0899"},
+                                                        "growth",
+                                                        0.3},
                                            HiddenEffect{"hertz-contact", "hertz-contact", "8"},
                                            HiddenEffect{"sticking-creep",
                                                         "sticking-creep:creepResistance=60",

@@ -200,3 +200,26 @@ TEST(EffectCatalog, DescribesValuesWithUnitsAndChoices)
     EXPECT_EQ(describeEffect(*findEffect("breakaway-jump"), {1}), "breakaway-jump: jumpCurve = bow");
     EXPECT_EQ(describeEffect(*findEffect("hertz-contact"), {}), "hertz-contact");
 }
+
+// Junction growth is fitted as (gain after a 50 ms hold, onset, form): each point maps to the growth whose
+// ageing law gives that gain at 50 ms, in both forms; every other effect is fitted in its own parameters.
+TEST(EffectCatalog, JunctionGrowthIsFittedAlongTheGainAtAFirstHold)
+{
+    const Effect& growth = *findEffect("junction-growth");
+    ASSERT_EQ(fitCoordinates(growth).size(), growth.parameters.size());
+    for (std::size_t j = 0; j < growth.parameters.size(); ++j)
+        EXPECT_EQ(fitCoordinates(growth)[j].choices, growth.parameters[j].choices);
+    const auto log = parameterValues(growth, {0.86, 0.003, 0.0});
+    EXPECT_NEAR(log[0] * std::log(1.0 + 0.05 / 0.003), 0.86, 1e-12);
+    EXPECT_DOUBLE_EQ(log[1], 0.003);
+    const auto saturating = parameterValues(growth, {0.4, 0.02, 1.0});
+    EXPECT_NEAR(saturating[0] * (1.0 - std::exp(-0.05 / 0.02)), 0.4, 1e-12);
+    EXPECT_DOUBLE_EQ(parameterValues(growth, {2.0, 0.05, 0.0})[0], 1.0); // held within the catalog's range
+    for (const auto& e : effectCatalog())
+        if (&e != &growth)
+        {
+            EXPECT_EQ(&fitCoordinates(e), &e.parameters) << e.name;
+            const std::vector<double> v(e.parameters.size(), 0.0);
+            EXPECT_EQ(parameterValues(e, v), v) << e.name;
+        }
+}

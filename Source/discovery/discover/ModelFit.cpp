@@ -126,8 +126,22 @@ void ModelFit::grid(const std::vector<std::size_t>& axes, int points)
 
 void ModelFit::golden(std::size_t j, double halfWidth, int evaluations)
 {
+    golden(j, halfWidth, evaluations, std::vector<double>(best_));
+}
+
+std::vector<double> ModelFit::bestWith(std::size_t j, double value) const
+{
+    const std::vector<double>* found = nullptr;
+    double lowest = 0.0;
+    for (const auto& [point, objective] : memo_)
+        if (point[j] == value && (!found || objective < lowest))
+            found = &point, lowest = objective;
+    return found ? *found : best_;
+}
+
+void ModelFit::golden(std::size_t j, double halfWidth, int evaluations, const std::vector<double>& centre)
+{
     const auto& p = *coordinates_[j];
-    const std::vector<double> centre = best_;
     const double x0 = toSearch(j, centre[j]);
     double a = std::max(toSearch(j, p.min), x0 - halfWidth), b = std::min(toSearch(j, p.max), x0 + halfWidth);
     auto at = [&](double x)

@@ -43,6 +43,10 @@ class ModelFit
     /// Golden-section search of coordinate j over best +- halfWidth (search scale, within its range) with
     /// `evaluations` points; adopts the minimum when it beats the best point.
     void golden(std::size_t j, double halfWidth, int evaluations);
+    /// The same around `centre` instead of the best point (still adopting only what beats the best point).
+    void golden(std::size_t j, double halfWidth, int evaluations, const std::vector<double>& centre);
+    /// The best point evaluated so far whose coordinate j equals `value` (a choice); best() if there is none.
+    std::vector<double> bestWith(std::size_t j, double value) const;
     /// The width of coordinate j's range on its search scale.
     double span(std::size_t j) const;
 
