@@ -21,7 +21,11 @@ void junctionGrowth(SimulationModel& m, const std::vector<double>& v)
 
 void breakawayJump(SimulationModel& m, const std::vector<double>& v)
 {
-    m.preset.friction = v[0] == 0.0 ? "modified-rod" : "modified-bow";
+    if (v[0] == 0.0)
+        m.preset.friction = "modified-rod";
+    else if (v[0] == 1.0)
+        m.preset.friction = "modified-bow";
+    m.frictionEffects.breakawayMargin = v[1];
 }
 
 void hertzContact(SimulationModel& m, const std::vector<double>&)
@@ -114,12 +118,20 @@ std::vector<Effect> makeCatalog()
                                                "(frequency-independent) or the bending term (high partials)"};
     const EffectParameter jumpCurve{.name = "jumpCurve",
                                     .min = 0.0,
-                                    .max = 1.0,
+                                    .max = 2.0,
                                     .drawMin = 0.0,
                                     .drawMax = 1.0,
-                                    .choices = {"rod", "bow"},
-                                    .meaning =
-                                        "the jump curve h(v): rosin-coated rod (eq. 13) or bow (eq. 12)"};
+                                    .choices = {"rod", "bow", "none"},
+                                    .meaning = "the jump curve h(v): rosin-coated rod (eq. 13) or bow (eq. "
+                                               "12), or none (the baseline law keeps its curve)"};
+    // Drawn 0, so Rosin's own synth-data hides seed 002's law as it always did.
+    const EffectParameter firstSlipMargin{.name = "firstSlipMargin",
+                                          .min = 0.0,
+                                          .max = 1.0,
+                                          .drawMin = 0.0,
+                                          .drawMax = 0.0,
+                                          .meaning = "fractional excess of the static limit at rest, "
+                                                     "released by the first slip"};
     const EffectParameter creepResistance{.name = "creepResistance",
                                           .unit = "N s/m",
                                           .min = 5.0,
@@ -154,7 +166,7 @@ std::vector<Effect> makeCatalog()
         {"breakaway-jump",
          "abrupt release at the first slip while the rosin is cold (modified thermal law)",
          "seed 002 eqs. 6, 12, 13",
-         {jumpCurve},
+         {jumpCurve, firstSlipMargin},
          breakawayJump},
         {"hertz-contact",
          "contact area proportional to N^(2/3) instead of N",

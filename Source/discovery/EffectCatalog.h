@@ -14,7 +14,11 @@
 //                        only along a curve (growth x ln(1 + t / tau_c) about constant).
 //   breakaway-jump       an abrupt release at the first slip while the rosin is cold: the modified thermal
 //                        law of seed 002 (eq. 6 with the jump curve of eq. 12 bow / eq. 13 rod) replaces the
-//                        preset's law. Parameter: jumpCurve, a choice of "rod" or "bow".
+//                        preset's law, or (jumpCurve "none") the preset's law stays; either way the contact
+//                        at rest may hold firstSlipMargin more than the law's static limit until its first
+//                        slip (physics::BreakawayMarginLaw: the jump's signature without a curve; issue 16
+//                        item 4). Parameters: jumpCurve, a choice of "rod", "bow" or "none";
+//                        firstSlipMargin (dimensionless).
 //   hertz-contact        contact area ~ N^(2/3) (one elastic contact) instead of ~ N (reference section 8.3;
 //                        seed 001 Fig. 11): the preset's contact scaling becomes Hertz. No parameter.
 //   sticking-creep       viscous-like creep during nominal sticking (seed 001 section 5.3): a dashpot in

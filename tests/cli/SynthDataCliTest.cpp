@@ -292,7 +292,7 @@ TEST_F(SynthDataCli, BadValuesNameTheOptionAndWriteNothing)
     for (const Case& c :
          {Case{tiny("junction-growth:growth=5", "1", "never"), "--effect: expected growth in 0..1"},
           Case{tiny("junction-growth:speed=1", "1", "never"), "NAME one of growth, onsetTime"},
-          Case{tiny("breakaway-jump:jumpCurve=violin", "1", "never"), "jumpCurve one of rod, bow"},
+          Case{tiny("breakaway-jump:jumpCurve=violin", "1", "never"), "jumpCurve one of rod, bow, none"},
           Case{with({"--effect", "hertz-contact"}), "--effect: expected none alone"},
           Case{{"--effect", "hertz-contact", "--effect", "hertz-contact", "--scan", "guettler", "--seed", "1",
                 "--out", "never"},

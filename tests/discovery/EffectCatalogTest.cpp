@@ -46,7 +46,7 @@ TEST(EffectCatalog, ParametersHaveNamesUnitsAndRanges)
 {
     const std::map<std::string, std::vector<std::string>> expected{
         {"junction-growth", {"growth", "onsetTime", "ageingForm"}},
-        {"breakaway-jump", {"jumpCurve"}},
+        {"breakaway-jump", {"jumpCurve", "firstSlipMargin"}},
         {"hertz-contact", {}},
         {"sticking-creep", {"creepResistance"}},
         {"extra-string-damping", {"lossScale", "lossTerms"}},
@@ -74,7 +74,8 @@ TEST(EffectCatalog, ParametersHaveNamesUnitsAndRanges)
         EXPECT_EQ(names, expected.at(e.name)) << e.name;
     }
     const auto& jump = findEffect("breakaway-jump")->parameters.front();
-    EXPECT_EQ(jump.choices, (std::vector<std::string>{"rod", "bow"}));
+    EXPECT_EQ(jump.choices, (std::vector<std::string>{"rod", "bow", "none"}));
+    EXPECT_EQ(jump.drawMax, 1.0); // synth-data hides seed 002's law, rod or bow, as it always did
     EXPECT_EQ(findEffect("junction-growth")->parameters[1].unit, "s");
     EXPECT_EQ(findEffect("sticking-creep")->parameters[0].unit, "N s/m");
     EXPECT_EQ(findEffect("ambient-temperature")->parameters[0].unit, "K");
@@ -103,11 +104,30 @@ TEST(EffectCatalog, JunctionGrowthAgesTheVoicesStaticLimit)
 
 TEST(EffectCatalog, BreakawayJumpSwitchesToTheModifiedLawOfSeed002)
 {
-    SimulationModel rod = withEffect("breakaway-jump", {0});
+    SimulationModel rod = withEffect("breakaway-jump", {0, 0.0});
     EXPECT_EQ(rod.preset.friction, "modified-rod");
     EXPECT_STREQ(frictionLaw(rod)->name(), "modified-rod");
-    EXPECT_STREQ(frictionLaw(withEffect("breakaway-jump", {1}))->name(), "modified-bow");
+    EXPECT_STREQ(frictionLaw(withEffect("breakaway-jump", {1, 0.0}))->name(), "modified-bow");
     EXPECT_STREQ(frictionLaw(SimulationModel{})->name(), "plastic");
+}
+
+// The family's curve-free member: the baseline's law, with a margin on its static limit until the first slip.
+TEST(EffectCatalog, BreakawayWithoutACurveRaisesOnlyTheRestingLimit)
+{
+    EXPECT_EQ(withEffect("breakaway-jump", {2, 0.3}).preset.friction, SimulationModel{}.preset.friction);
+    SimulationModel classical; // a law without a temperature, so the slip leaves the limit as it was
+    classical.preset.friction = "classical";
+    SimulationModel model = classical;
+    applyEffect(*findEffect("breakaway-jump"), {2, 0.3}, model);
+    EXPECT_EQ(model.preset.friction, "classical");
+    auto law = frictionLaw(model);
+    law->prepare(kFs);
+    auto plain = frictionLaw(classical);
+    plain->prepare(kFs);
+    EXPECT_NEAR(law->staticCoefficient(1.0), 1.3 * plain->staticCoefficient(1.0), 1e-9);
+    law->solve({-10.0, 1.0, 1.0}); // far beyond any limit: the first slip
+    plain->solve({-10.0, 1.0, 1.0});
+    EXPECT_NEAR(law->staticCoefficient(1.0), plain->staticCoefficient(1.0), 1e-9);
 }
 
 TEST(EffectCatalog, HertzContactChangesTheContactScaling)
@@ -197,7 +217,8 @@ TEST(EffectCatalog, DescribesValuesWithUnitsAndChoices)
 {
     EXPECT_EQ(describeEffect(*findEffect("junction-growth"), {0.2, 0.005, 1.0}),
               "junction-growth: growth = 0.2, onsetTime = 0.005 s, ageingForm = saturating");
-    EXPECT_EQ(describeEffect(*findEffect("breakaway-jump"), {1}), "breakaway-jump: jumpCurve = bow");
+    EXPECT_EQ(describeEffect(*findEffect("breakaway-jump"), {1, 0}),
+              "breakaway-jump: jumpCurve = bow, firstSlipMargin = 0");
     EXPECT_EQ(describeEffect(*findEffect("hertz-contact"), {}), "hertz-contact");
 }
 

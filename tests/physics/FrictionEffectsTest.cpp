@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "physics/friction/BreakawayMarginLaw.h"
 #include "physics/friction/FrictionEffects.h"
 #include "physics/friction/JunctionGrowthLaw.h"
 #include "physics/friction/StickingCreepLaw.h"
@@ -80,6 +81,51 @@ TEST(JunctionGrowth, SaturatingFormApproachesItsLimit)
     for (int k = 0; k < 4800; ++k)
         law.solve({0.0, 1.0, 1.0});             // and 100 ms more
     EXPECT_NEAR(law.growthFactor(), 1.2, 1e-6); // where the logarithmic form would be at 1.79
+}
+
+// The first slip from rest comes at (1 + margin) times the law's static limit (a ramp of the rigid-sticking
+// force, as in SlipsAtTheAgedStaticLimit); after it the contact holds only the law's own limit, and
+// reset() restores the margin.
+int firstSlipOfRamp(FrictionLaw& law, double rate, double N)
+{
+    for (int k = 0; k < static_cast<int>(kFs); ++k)
+        if (!law.solve({-rate * (k + 1) / kFs, 1.0, N}).sticking)
+            return k;
+    return -1;
+}
+
+TEST(BreakawayMargin, TheFirstSlipReleasesTheMarginAndOnlyTheFirst)
+{
+    const double m = 0.3, N = 1.0, rate = 40.0;
+    BreakawayMarginLaw law(classical(), m);
+    law.prepare(kFs);
+    const double mu0 = classical()->staticCoefficient(N);
+    ASSERT_TRUE(law.restingLimit(N).has_value());
+    EXPECT_NEAR(*law.restingLimit(N), (1.0 + m) * mu0 * N, 1e-9);
+    // Sample k carries force rate (k + 1) / fs: the slip is the first sample above the raised limit.
+    const double expected = (1.0 + m) * mu0 * N * kFs / rate - 1.0;
+    const int first = firstSlipOfRamp(law, rate, N);
+    EXPECT_NEAR(first, expected, 1.0);
+    EXPECT_TRUE(law.released());
+    EXPECT_NEAR(law.staticCoefficient(N), mu0, 1e-12);
+    for (int k = 0; k < 480; ++k)
+        law.solve({0.0, 1.0, N}); // stuck again, 10 ms
+    const int second = firstSlipOfRamp(law, rate, N);
+    EXPECT_NEAR(second, mu0 * N * kFs / rate - 1.0, 1.0); // the plain limit: no margin came back
+    law.reset();
+    EXPECT_FALSE(law.released());
+    EXPECT_NEAR(firstSlipOfRamp(law, rate, N), expected, 1.0);
+}
+
+TEST(BreakawayMargin, IsAFrictionEffectAnyLawCanTake)
+{
+    FrictionEffects effects;
+    EXPECT_FALSE(effects.any());
+    effects.breakawayMargin = 0.25;
+    EXPECT_TRUE(effects.any());
+    auto law = withEffects(classical(), effects);
+    law->prepare(kFs);
+    EXPECT_NEAR(law->staticCoefficient(1.0), 1.25 * classical()->staticCoefficient(1.0), 1e-12);
 }
 
 TEST(StickingCreep, FollowsTheDashpotWhileStuckAndTheLawWhileSliding)

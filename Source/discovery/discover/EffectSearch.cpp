@@ -16,6 +16,8 @@ namespace
 {
 // Grid points per continuous axis: 7 for one parameter, 5 for two, 4 for two beside a choice (32 points).
 constexpr int kGridOne = 7, kGridTwo = 5, kGridTwoWithChoice = 4, kGoldenSteps = 5, kJointSteps = 3;
+/// A choice is refined on its own when its best grid point's objective is within this factor of the best.
+constexpr double kChoiceContest = 1.25;
 /// An effect with continuous parameters is fitted jointly with the calibration only when it alone already
 /// lowers the training objective by this share: one that explains nothing of the training half will not win
 /// on the held-out one, and the joint fit costs as much again.
@@ -63,17 +65,24 @@ ModelFit fitEffect(const SearchInputs& in, const SimulationModel& start, double 
             if (searched[j].choices.empty())
                 fit.golden(j, share * fit.span(j) / (points - 1), steps);
     };
-    // Every choice is refined from its own best grid point, not only the grid's best: at the grid's coarse
-    // points the wrong form can lead (measured on the baseline kernel path, Rosin's own junction-growth set:
-    // the saturating form led at the grid and was refined to growth 0.711, gap 1.82 -> 0.84, where the
-    // hidden logarithmic form, refined, explains it all).
+    // Every choice whose best grid point comes within kChoiceContest of the grid's best (the leader too) is
+    // refined from there, not only the grid's best: the coarse grid does not rank close forms reliably
+    // (measured on the baseline kernel path, Rosin's own junction-growth set: with the leader alone refined,
+    // the fit ended in the saturating form, growth 0.711, gap 1.82 -> 0.84; with both, in the hidden
+    // logarithmic one, gap -> 0).
+    const double contest = kChoiceContest * fit.bestValue();
     for (std::size_t c = 0; c < ne; ++c)
         if (!searched[c].choices.empty())
             for (std::size_t k = 0; k < searched[c].choices.size(); ++k)
+            {
+                const std::vector<double> from = fit.bestWith(c, static_cast<double>(k));
+                if (!(fit.objective(from) <= contest))
+                    continue; // a distant form is left
                 for (std::size_t j = 0; j < ne; ++j)
                     if (searched[j].choices.empty())
                         fit.golden(j, fit.span(j) / (points - 1), kGoldenSteps,
                                    fit.bestWith(c, static_cast<double>(k)));
+            }
     refineEffect(1.0, kGoldenSteps);
     // An effect with nothing continuous to fit (hertz contact: area ~ F^(2/3) at the rig's 1 N) changes the
     // model's structure only together with the nuisance it is tied to (the contact radius sets the area at

@@ -8,6 +8,8 @@ namespace rosin::physics
 
 std::unique_ptr<FrictionLaw> withEffects(std::unique_ptr<FrictionLaw> law, const FrictionEffects& effects)
 {
+    if (effects.breakawayMargin > 0.0)
+        law = std::make_unique<BreakawayMarginLaw>(std::move(law), effects.breakawayMargin);
     if (effects.junctionGrowth > 0.0)
         law = std::make_unique<JunctionGrowthLaw>(
             std::move(law), effects.junctionGrowth, effects.junctionGrowthTime,
