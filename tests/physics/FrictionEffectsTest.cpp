@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "physics/friction/BreakawayMarginLaw.h"
@@ -115,6 +117,29 @@ TEST(BreakawayMargin, TheFirstSlipReleasesTheMarginAndOnlyTheFirst)
     law.reset();
     EXPECT_FALSE(law.released());
     EXPECT_NEAR(firstSlipOfRamp(law, rate, N), expected, 1.0);
+}
+
+// Both held-contact effects refuse what they cannot be, naming themselves.
+TEST(HeldContact, ImpossibleSettingsAreRefusedByName)
+{
+    auto refusal = [](auto make)
+    {
+        try
+        {
+            make();
+        }
+        catch (const std::invalid_argument& e)
+        {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(refusal([] { JunctionGrowthLaw(nullptr, 0.1, 0.01); }).find("JunctionGrowthLaw"),
+              std::string::npos);
+    EXPECT_NE(refusal([] { JunctionGrowthLaw(classical(), -0.1, 0.01); }).find("growth"), std::string::npos);
+    EXPECT_NE(refusal([] { BreakawayMarginLaw(nullptr, 0.1); }).find("BreakawayMarginLaw"),
+              std::string::npos);
+    EXPECT_NE(refusal([] { BreakawayMarginLaw(classical(), -0.1); }).find("margin"), std::string::npos);
 }
 
 TEST(BreakawayMargin, IsAFrictionEffectAnyLawCanTake)

@@ -8,35 +8,27 @@
 // as the first slip warms a cold contact. Sliding friction is the wrapped law's throughout. Real-time safe.
 #include <memory>
 
-#include "FrictionLaw.h"
+#include "HeldContactLaw.h"
 
 namespace rosin::physics
 {
 
-class BreakawayMarginLaw final : public FrictionLaw
+class BreakawayMarginLaw final : public HeldContactLaw
 {
   public:
     /// margin: fractional excess of the static limit at rest, >= 0.
     BreakawayMarginLaw(std::unique_ptr<FrictionLaw> inner, double margin);
 
-    void prepare(double sampleRate) override;
-    void reset() noexcept override;
-    JunctionSolution solve(const JunctionInput& in) noexcept override;
-    JunctionSolution solveCreeping(const JunctionInput& in, double eta) noexcept override;
-    double contactTemperature() const noexcept override { return inner_->contactTemperature(); }
-    double staticCoefficient(double bowForce) const noexcept override;
+    double forceFactor() const noexcept override { return released_ ? 1.0 : 1.0 + margin_; }
     /// At rest nothing has slipped: the wrapped law's limit at the raised force.
     std::optional<double> restingLimit(double bowForce) const noexcept override;
-    const char* name() const noexcept override { return inner_->name(); }
-
     /// Whether the contact has slipped since reset() (the margin is gone).
     bool released() const noexcept { return released_; }
 
   private:
-    JunctionInput held(const JunctionInput& in) const noexcept;   ///< bow force x (1 + margin) until released
-    JunctionSolution watched(const JunctionSolution& s) noexcept; ///< releases on the first sliding sample
-    double factor() const noexcept { return released_ ? 1.0 : 1.0 + margin_; }
-    std::unique_ptr<FrictionLaw> inner_;
+    void forget() noexcept override { released_ = false; }
+    /// Creeping counts as held: the junctions have not broken.
+    void observe(const JunctionSolution& s) noexcept override { released_ = released_ || !s.sticking; }
     double margin_;
     bool released_ = false;
 };

@@ -8,12 +8,11 @@
 // (g(0) = 1: a slip breaks the junctions and the memory). Or, saturating (AgeingForm::Saturating),
 //     g(t_h) = 1 + growth (1 - exp(-t_h / tau_c)),
 // the form of an area that creeps towards a limit rather than on logarithmically: the data of a short hold
-// cannot tell the two apart, a long one can. For the curve laws that scales the static limit
-// mu_s N exactly; for the thermal laws it scales the contact area A(Fb), which is what ageing grows.
-// Real-time safe; the wrapped law keeps its own state.
+// cannot tell the two apart, a long one can. (HeldContactLaw: for the thermal laws the factor scales the
+// contact area A(Fb), which is what ageing grows.)
 #include <memory>
 
-#include "FrictionLaw.h"
+#include "HeldContactLaw.h"
 
 namespace rosin::physics
 {
@@ -24,7 +23,7 @@ enum class AgeingForm
     Saturating
 };
 
-class JunctionGrowthLaw final : public FrictionLaw
+class JunctionGrowthLaw final : public HeldContactLaw
 {
   public:
     /// growth: fractional increase of the static limit per e-fold of (1 + t_h / tau_c) (logarithmic) or at
@@ -32,28 +31,21 @@ class JunctionGrowthLaw final : public FrictionLaw
     JunctionGrowthLaw(std::unique_ptr<FrictionLaw> inner, double growth, double tauSeconds,
                       AgeingForm form = AgeingForm::Logarithmic);
 
-    void prepare(double sampleRate) override;
-    void reset() noexcept override;
-    JunctionSolution solve(const JunctionInput& in) noexcept override;
-    /// The aged contact creeping (a creep wrapper outside this one): the inner law's solveCreeping.
-    JunctionSolution solveCreeping(const JunctionInput& in, double eta) noexcept override;
-    double contactTemperature() const noexcept override { return inner_->contactTemperature(); }
-    /// The aged limit: the wrapped law's static coefficient at the force scaled by g(t_h) now, per N.
-    double staticCoefficient(double bowForce) const noexcept override;
-    const char* name() const noexcept override { return inner_->name(); }
-
     /// g(t_h) for the current hold time.
+    double forceFactor() const noexcept override { return growthFactor(); }
     double growthFactor() const noexcept;
-    double holdTime() const noexcept { return holdSamples_ * T_; }
+    double holdTime() const noexcept { return static_cast<double>(holdSamples_) * samplePeriod(); }
 
   private:
-    JunctionInput aged(const JunctionInput& in) const noexcept;   ///< the bow force x growthFactor()
-    JunctionSolution counted(const JunctionSolution& s) noexcept; ///< advances the hold time
-    std::unique_ptr<FrictionLaw> inner_;
+    void forget() noexcept override { holdSamples_ = 0; }
+    /// The hold time counts samples stuck so far (creeping included); a sliding sample breaks the junctions.
+    void observe(const JunctionSolution& s) noexcept override
+    {
+        holdSamples_ = s.sticking ? holdSamples_ + 1 : 0;
+    }
     double growth_;
     double tau_;
     AgeingForm form_;
-    double T_ = 1.0 / 48000.0;
     long holdSamples_ = 0;
 };
 
