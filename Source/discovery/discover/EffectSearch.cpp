@@ -59,12 +59,15 @@ ModelFit fitEffect(const SearchInputs& in, const SimulationModel& start, double 
     std::iota(effectAxes.begin(), effectAxes.end(), 0);
     if (ne > 0)
         fit.grid(effectAxes, points);
-    auto refineEffect = [&](double share, int steps)
+    // Golden steps along each continuous parameter, each from the point `centre()` gives then.
+    auto refineAround = [&](double share, int steps, const auto& centre)
     {
         for (std::size_t j = 0; j < ne; ++j)
             if (searched[j].choices.empty())
-                fit.golden(j, share * fit.span(j) / (points - 1), steps);
+                fit.golden(j, share * fit.span(j) / (points - 1), steps, centre());
     };
+    auto refineEffect = [&](double share, int steps)
+    { refineAround(share, steps, [&] { return fit.best(); }); };
     // Every choice whose best grid point comes within kChoiceContest of the grid's best (the leader too) is
     // refined from there, not only the grid's best: the coarse grid does not rank close forms reliably
     // (measured on the baseline kernel path, Rosin's own junction-growth set: with the leader alone refined,
@@ -72,17 +75,12 @@ ModelFit fitEffect(const SearchInputs& in, const SimulationModel& start, double 
     // logarithmic one, gap -> 0).
     const double contest = kChoiceContest * fit.bestValue();
     for (std::size_t c = 0; c < ne; ++c)
-        if (!searched[c].choices.empty())
-            for (std::size_t k = 0; k < searched[c].choices.size(); ++k)
-            {
-                const std::vector<double> from = fit.bestWith(c, static_cast<double>(k));
-                if (!(fit.objective(from) <= contest))
-                    continue; // a distant form is left
-                for (std::size_t j = 0; j < ne; ++j)
-                    if (searched[j].choices.empty())
-                        fit.golden(j, fit.span(j) / (points - 1), kGoldenSteps,
-                                   fit.bestWith(c, static_cast<double>(k)));
-            }
+        for (std::size_t k = 0; k < searched[c].choices.size(); ++k)
+        {
+            auto formBest = [&] { return fit.bestWith(c, static_cast<double>(k)); };
+            if (fit.objective(formBest()) <= contest) // a distant form is left
+                refineAround(1.0, kGoldenSteps, formBest);
+        }
     refineEffect(1.0, kGoldenSteps);
     // An effect with nothing continuous to fit (hertz contact: area ~ F^(2/3) at the rig's 1 N) changes the
     // model's structure only together with the nuisance it is tied to (the contact radius sets the area at
