@@ -264,7 +264,10 @@ TEST_F(DiscoverCli, ForeignDataWithNothingHiddenIsExplainedByCalibration)
 // gap reported compares pitch and tilt where both sides show Helmholtz motion, the calibration fits them
 // where the measurement does, so it does not minimise this number). The descent that fitted the contact
 // radius first, which flattens the pitch a little as a lower tension does, stayed at the nominal tension
-// there (gap 1.08 -> 1.10). Nothing is hidden; the verdict (below) is not yet the same on every vector unit.
+// there (gap 1.08 -> 1.10). Nothing is hidden, so nothing may be named and the verdict must be clean: the
+// remaining gap's p was 0.51 on x86-64-v4 and 1 on x86-64-v3 and the baseline path (28 November 2026, with
+// the steady level's model-form tolerance measured on six other seeds; before it, 0.0075 on x86-64-v4,
+// where the calibration takes another of two near-equal optima), against the verdict's 0.01.
 TEST_F(DiscoverCli, CalibrationRecoversTheTensionOfAForeignString)
 {
     const Result made = rosin({"synth-data", "--generator", "independent", "--effect", "none", "--scan",
@@ -281,16 +284,11 @@ TEST_F(DiscoverCli, CalibrationRecoversTheTensionOfAForeignString)
             calibrated = p["baseline"];
     EXPECT_NEAR(calibrated / drawn, 1.0, 0.005) << "calibrated " << calibrated << ", drawn " << drawn;
     EXPECT_LT(j["calibration"]["gapAfterCalibration"].get<double>(), 0.8 * j["gapBefore"].get<double>());
-    // Nothing is hidden, but the verdict on this set is not decided with margin (issue 16 item 8, open): the
-    // remaining gap's p (steadyLevel) is 0.16 on x86-64-v3 and 0.35 on the baseline path, 0.0075 on x86-64-v4
-    // (measured 28 November 2026), where the calibration takes another of two near-equal optima (rosin
-    // conductivity x0.905 and string losses x1.17 instead of contact radius x1.02; training objectives 1.465
-    // and 1.469): the verdict then reads "unexplained". Asserted as the measured band, so that a change
-    // either way is noticed; the clean verdict on every path is what issue 16 still owes.
+    EXPECT_TRUE(j["steps"].empty()) << j["steps"].dump();
+    EXPECT_EQ(j["status"], "no-significant-discrepancy") << j["remainingGap"].dump();
     const double p = j["remainingGap"]["pValue"].get<double>();
     RecordProperty("remainingGapP", std::to_string(p));
-    EXPECT_GT(p, 0.003) << j["remainingGap"].dump();
-    EXPECT_LT(p, 0.6) << j["remainingGap"].dump();
+    EXPECT_GT(p, 0.05) << j["remainingGap"].dump();
 }
 
 TEST_F(DiscoverCli, MalformedDatasetIsRefusedWithFileAndField)
