@@ -5,8 +5,9 @@
 //   Split: a checkerboard over the grid, (beta + force + motion index) even -> training, odd -> held out
 //          (repeats of a cell stay together), so both halves cover the whole scan.
 //   Fit:   a grid over the catalog's fit range (7 points for one parameter, 5 x 5 for two, 4 x 4 for two
-//          beside a choice; log-spaced where the catalog says so; every choice), then a golden-section
-//          refinement of each continuous parameter around the best point (5 evaluations each), from the
+//          beside a choice; log-spaced where the catalog says so; every choice), then, where the grid's best
+//          lowers the training objective by 2 %, a golden-section refinement of each continuous parameter
+//          around the best point (5 evaluations each), from the
 //          nuisance values as stated (nominal, but for the tuning and the measurement chain; after an adopted
 //          effect, those fitted with it): a calibration may already have bent them to mimic the effect.
 //          Then, if the effect lowered the training objective by 2 %, the calibration's active nuisance
