@@ -76,6 +76,20 @@ void ambientTemperature(SimulationModel& m, const std::vector<double>& v)
     m.preset.ambientOffset += v[0];
 }
 
+// A choice among `choices`: its range is the indices (0 .. choices - 1), so it cannot fall out of step with
+// the list; rosin synth-data draws among the first drawMax + 1.
+EffectParameter choiceParameter(std::string name, std::vector<std::string> choices, double drawMax,
+                                std::string meaning)
+{
+    return {.name = std::move(name),
+            .min = 0.0,
+            .max = static_cast<double>(choices.size() - 1),
+            .drawMin = 0.0,
+            .drawMax = drawMax,
+            .choices = std::move(choices),
+            .meaning = std::move(meaning)};
+}
+
 std::vector<Effect> makeCatalog()
 {
     // Fit ranges (min..max) are wide: a gap may call for more than synth-data hides. Draw ranges are issue
@@ -100,30 +114,17 @@ std::vector<Effect> makeCatalog()
                                               .meaning = "fractional static-limit gain after a 50 ms hold"};
     // Signature families (issue 16 item 4): an effect is named by what it does, not by one formula. Rosin's
     // own synth-data draws the first form (draw range 0..0), so its datasets stay as they were.
-    const EffectParameter ageing{.name = "ageingForm",
-                                 .min = 0.0,
-                                 .max = 1.0,
-                                 .drawMin = 0.0,
-                                 .drawMax = 0.0,
-                                 .choices = {"logarithmic", "saturating"},
-                                 .meaning =
-                                     "growth without limit, ln(1 + t/tau), or towards one, 1 - exp(-t/tau)"};
-    const EffectParameter lossTerms{.name = "lossTerms",
-                                    .min = 0.0,
-                                    .max = 2.0,
-                                    .drawMin = 0.0,
-                                    .drawMax = 0.0,
-                                    .choices = {"all", "internal", "bending"},
-                                    .meaning = "which terms of the loss law grow: all, the internal friction "
-                                               "(frequency-independent) or the bending term (high partials)"};
-    const EffectParameter jumpCurve{.name = "jumpCurve",
-                                    .min = 0.0,
-                                    .max = 2.0,
-                                    .drawMin = 0.0,
-                                    .drawMax = 1.0,
-                                    .choices = {"rod", "bow", "none"},
-                                    .meaning = "the jump curve h(v): rosin-coated rod (eq. 13) or bow (eq. "
-                                               "12), or none (the baseline law keeps its curve)"};
+    const EffectParameter ageing =
+        choiceParameter("ageingForm", {"logarithmic", "saturating"}, 0.0,
+                        "growth without limit, ln(1 + t/tau), or towards one, 1 - exp(-t/tau)");
+    const EffectParameter lossTerms = choiceParameter("lossTerms", {"all", "internal", "bending"}, 0.0,
+                                                      "which terms of the loss law grow: all, the internal "
+                                                      "friction (frequency-independent) or the bending term "
+                                                      "(high partials)");
+    // synth-data hides seed 002's law, rod or bow, as it always did.
+    const EffectParameter jumpCurve = choiceParameter("jumpCurve", {"rod", "bow", "none"}, 1.0,
+                                                      "the jump curve h(v): rosin-coated rod (eq. 13) or bow "
+                                                      "(eq. 12), or none (the baseline law keeps its curve)");
     // Drawn 0, so Rosin's own synth-data hides seed 002's law as it always did.
     const EffectParameter firstSlipMargin{.name = "firstSlipMargin",
                                           .min = 0.0,
