@@ -99,8 +99,9 @@ steadyLevel, the regime (a category, weighed by how often the measurement disagr
 slipFraction and loopArea where the bowed point is recorded, each normalised by the measurement's own
 scatter and the model's sensitivity to 2 % changes of the settings), fits each effect of the catalog on a
 training half (checkerboard over the grid) and adopts the one that removes the most held-out gap if
-significant (paired sign-flip test at 1 %, Bonferroni over the candidates, and a gain of at least 20 %); at
-most three effects.
+significant (paired sign-flip test at 1 %, Bonferroni over the candidates, and a gain of at least 20 %;
+a candidate close to it is cross-fitted, fitted on each half and scored on the other); at most three
+effects.
 
 options:
 )" + discoverOptionTable().describe() +

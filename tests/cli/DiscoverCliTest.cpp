@@ -3,7 +3,8 @@
 // generator and workflow is the dataset folder. For each of the six effects of the catalog, hidden alone, the
 // effect is named first and at least half of the gap goes; two hidden effects are both named; a dataset with
 // nothing hidden names nothing, also on data of the independent generator (its gap explained by
-// calibration); a malformed dataset is refused with a message naming the file and field.
+// calibration), whose hertz contact in a steady scan is named; a malformed dataset is refused with a message
+// naming the file and field.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -176,7 +177,8 @@ INSTANTIATE_TEST_SUITE_P(EveryEffect, DiscoverHiddenEffect,
 // calibration, a larger contact (radius at its prior's top, x1.15) mimics most of the modified law's cold
 // breakaway on this 8 x 8 set (gap 1.59 -> 0.56), and breakaway-jump, fitted from the stated values, is the
 // best candidate and the only one that helps (held-out gain +44.5 %, every other one below -5 %), but its
-// paired test gives p = 0.026 against the Bonferroni bar of 0.0017, so nothing is named.
+// paired test gives p = 0.026 against the Bonferroni bar of 0.0017; cross-fitted (fitted on each half, scored
+// on the other) +40.7 %, p 0.012 over both halves against 0.00083, so nothing is named.
 TEST_F(DiscoverCli, BreakawayJumpIsTheBestCandidateButShortOfTheBarKnownDiscrepancy)
 {
     makeDataset({"breakaway-jump:jumpCurve=rod"}, "6", "jump");
@@ -289,6 +291,29 @@ TEST_F(DiscoverCli, CalibrationRecoversTheTensionOfAForeignString)
     const double p = j["remainingGap"]["pValue"].get<double>();
     RecordProperty("remainingGapP", std::to_string(p));
     EXPECT_GT(p, 0.05) << j["remainingGap"].dump();
+}
+
+// Hertz contact in another string model's steady bowing (issue 16): the independent generator's own form
+// (area ~ F^0.634 about 0.68 N) in a 12 x 12 Schelleng scan. On the held-out half alone the catalog's
+// hertz contact came within a hair of the bar (+26.5 %, p 0.0028 against 0.0017 on x86-64-v4; p 1e-4 on
+// x86-64-v3), so the candidate is cross-fitted: fitted on each half and scored on the other, +32 %,
+// p 5e-5 over both halves against 0.00083. The gap falls 1.73 -> 1.07 (the tilt's model-form misfit
+// stays), not by half: asserted as a fall of at least a quarter.
+TEST_F(DiscoverCli, ForeignHertzContactInASteadyScanIsNamedFirst)
+{
+    const Result made =
+        rosin({"synth-data", "--generator", "independent", "--effect", "hertz-contact", "--scan", "schelleng",
+               "--grid", "12", "--duration", "0.4", "--seed", "31", "--threads", "2", "--out", "hertz"});
+    ASSERT_EQ(made.status, 0) << made.err;
+    const auto j = discover("hertz");
+    EXPECT_EQ(j["status"], "effect-found");
+    ASSERT_FALSE(j["steps"].empty());
+    const auto& first = j["steps"][0];
+    EXPECT_EQ(first["effect"], "hertz-contact");
+    EXPECT_LT(first["pValue"].get<double>(), 0.5 * first["alpha"].get<double>());
+    EXPECT_GE(first["heldOutGain"].get<double>(), 0.2);
+    RecordProperty("crossFitted", first["crossFitted"].get<bool>() ? "yes" : "no");
+    EXPECT_LT(j["gapAfter"].get<double>(), 0.75 * j["gapBefore"].get<double>());
 }
 
 TEST_F(DiscoverCli, MalformedDatasetIsRefusedWithFileAndField)

@@ -125,14 +125,23 @@ struct CurrentModel
     double startObjective; ///< of `start` on the training trials
 };
 
-EffectScore score(const SearchInputs& in, const CurrentModel& current, const std::vector<std::size_t>& active,
-                  const Effect& effect, double alpha)
+// An effect fitted on in.training and scored on in.heldOut against the current model.
+struct FoldScore
 {
-    EffectScore s;
-    s.effect = &effect;
+    std::vector<double> values;
+    NuisanceValues nuisance;
+    int evaluations = 0;
+    std::vector<double> before, after; ///< each scored trial's share of the objective
+    GapSummary gapBefore, gapAfter;
+};
+
+FoldScore fitAndScore(const SearchInputs& in, const CurrentModel& current,
+                      const std::vector<std::size_t>& active, const Effect& effect)
+{
+    FoldScore f;
     const ModelFit fit = fitEffect(in, current.start, current.startObjective, active, effect);
     const std::size_t ne = effect.parameters.size();
-    s.evaluations = fit.evaluations();
+    f.evaluations = fit.evaluations();
     SimulationModel m = current.start;
     const auto& nuisance = nuisanceParameters();
     for (std::size_t k = 0; k < active.size(); ++k)
@@ -146,27 +155,75 @@ EffectScore score(const SearchInputs& in, const CurrentModel& current, const std
     const std::vector<double> fitted =
         parameterValues(effect, {fit.best().begin(), fit.best().begin() + static_cast<std::ptrdiff_t>(ne)});
     for (std::size_t j = 0; j < ne; ++j)
-        s.values.push_back(roundToResolution(effect.parameters[j], fitted[j]));
-    applyEffect(effect, s.values, m);
-    s.nuisance = m.nuisance;
+        f.values.push_back(roundToResolution(effect.parameters[j], fitted[j]));
+    applyEffect(effect, f.values, m);
+    f.nuisance = m.nuisance;
     const auto sim = simulateFeatures(m, *in.dataset, in.heldOut, in.seconds, in.threads);
-    s.heldOutBefore = fitGap(in.heldOut, in.measured, current.heldOut, in.scatter);
-    s.heldOutAfter = fitGap(in.heldOut, in.measured, sim, in.scatter, current.heldOut);
-    const auto e0 = objectiveShares(in.heldOut, in.measured, current.heldOut, in.scatter);
-    const auto e1 = objectiveShares(in.heldOut, in.measured, sim, in.scatter, current.heldOut);
+    f.gapBefore = fitGap(in.heldOut, in.measured, current.heldOut, in.scatter);
+    f.gapAfter = fitGap(in.heldOut, in.measured, sim, in.scatter, current.heldOut);
+    f.before = objectiveShares(in.heldOut, in.measured, current.heldOut, in.scatter);
+    f.after = objectiveShares(in.heldOut, in.measured, sim, in.scatter, current.heldOut);
+    return f;
+}
+
+// The paired test and the relative fall of the objective over the trials of one or both folds.
+struct Evidence
+{
+    double gain = 0.0;
+    double pValue = 1.0;
+};
+
+Evidence evidenceOf(const std::vector<const FoldScore*>& folds, std::uint64_t seed)
+{
     std::vector<double> d;
     double before = 0.0, after = 0.0;
-    for (std::size_t i = 0; i < e0.size(); ++i)
-    {
-        before += e0[i];
-        after += e1[i];
-        if (e0[i] != 0.0 || e1[i] != 0.0)
-            d.push_back(e0[i] - e1[i]);
-    }
-    s.heldOutShares = e1;
-    s.heldOutGain = before > 0.0 ? 1.0 - after / before : 0.0;
-    s.pValue = signFlipTest(d, in.seed + effectIndex(effect)).pValue;
-    s.significant = s.pValue < alpha && s.heldOutGain >= kMinRelativeGain;
+    for (const FoldScore* f : folds)
+        for (std::size_t i = 0; i < f->before.size(); ++i)
+        {
+            before += f->before[i];
+            after += f->after[i];
+            if (f->before[i] != 0.0 || f->after[i] != 0.0)
+                d.push_back(f->before[i] - f->after[i]);
+        }
+    return {before > 0.0 ? 1.0 - after / before : 0.0, signFlipTest(d, seed).pValue};
+}
+
+EffectScore score(const SearchInputs& in, const CurrentModel& current, const std::vector<std::size_t>& active,
+                  const Effect& effect, double alpha)
+{
+    EffectScore s;
+    s.effect = &effect;
+    const FoldScore a = fitAndScore(in, current, active, effect);
+    s.values = a.values;
+    s.nuisance = a.nuisance;
+    s.evaluations = a.evaluations;
+    s.heldOutBefore = a.gapBefore;
+    s.heldOutAfter = a.gapAfter;
+    s.heldOutShares = a.after;
+    const std::uint64_t seed = in.seed + effectIndex(effect);
+    const Evidence one = evidenceOf({&a}, seed);
+    s.heldOutGain = one.gain;
+    s.pValue = one.pValue;
+    s.significant = one.pValue < kHalfDecides * alpha && one.gain >= kMinRelativeGain;
+    if (s.significant || !(one.pValue < kCrossFitScreenP && one.gain >= kCrossFitScreenGain))
+        return s;
+    // Cross-fitted: the effect fitted on the held-out half and scored on the training half, and the
+    // test over every trial (Cross-fit in EffectSearch.h).
+    SearchInputs swapped = in;
+    std::swap(swapped.training, swapped.heldOut);
+    CurrentModel other = current;
+    other.startObjective =
+        fitGap(swapped.training, in.measured,
+               simulateFeatures(current.start, *in.dataset, swapped.training, in.seconds, in.threads),
+               in.scatter, in.reference)
+            .objective;
+    const FoldScore b = fitAndScore(swapped, other, active, effect);
+    s.evaluations += b.evaluations + 1;
+    const Evidence both = evidenceOf({&a, &b}, seed + 104729);
+    s.crossFitted = true;
+    s.heldOutGain = both.gain;
+    s.pValue = both.pValue;
+    s.significant = both.pValue < (1.0 - kHalfDecides) * alpha && both.gain >= kMinRelativeGain;
     return s;
 }
 
@@ -286,11 +343,15 @@ std::string describeEvidence(const EffectScore& s, double alpha)
     }
     if (first)
         text += "no single feature changed by more than 10 %";
-    char tail[240];
+    char tail[320];
     std::snprintf(tail, sizeof(tail),
-                  "; the mean normalised squared error fell by %.0f %%; paired sign-flip test p = %.2g "
+                  "; %s the mean normalised squared error fell by %.0f %%; paired sign-flip test p = %.2g "
                   "(threshold %.2g)",
-                  100.0 * s.heldOutGain, s.pValue, alpha);
+                  s.crossFitted
+                      ? "cross-fitted (the effect also fitted on the held-out half and scored on the "
+                        "training half), over both halves"
+                      : "over the held-out half",
+                  100.0 * s.heldOutGain, s.pValue, kHalfDecides * alpha);
     return text + tail;
 }
 
