@@ -68,7 +68,11 @@ Discovery runDiscovery(const Dataset& dataset, std::vector<TrialFeatures> measur
     d.gapAfter = measureGap(d.used, d.measured, d.final, d.scatter);
     for (std::size_t f = 0; f < kFeatureCount; ++f)
         d.whereAfter[f] = whereLargest(f, dataset, d.grid, d.used, d.measured, d.final, d.scatter);
-    d.remaining = gapSignificance(measureGap(d.used, d.measured, d.final, withModelFormTolerance(d.scatter)));
+    const FeatureScatter widened = withModelFormTolerance(d.scatter);
+    d.beyondToleranceBefore = measureGap(d.used, d.measured, d.baseline, widened);
+    d.beyondToleranceCalibrated = measureGap(d.used, d.measured, d.calibrated, widened);
+    d.beyondToleranceAfter = measureGap(d.used, d.measured, d.final, widened);
+    d.remaining = gapSignificance(d.beyondToleranceAfter);
     d.status = !d.search.steps.empty()                   ? "effect-found"
                : d.remaining.pValue < kSignificanceLevel ? "unexplained"
                                                          : "no-significant-discrepancy";

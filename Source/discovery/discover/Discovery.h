@@ -42,6 +42,10 @@ struct Discovery
     NuisanceValues finalNuisance; ///< as refitted together with the adopted effects
     /// Over all used trials: the nominal baseline (gapBefore), calibrated, the final model (gapAfter).
     GapSummary gapBefore, gapCalibrated, gapAfter;
+    /// The same three in units of the scatter widened by the model-form tolerance (ModelFormTolerance.h),
+    /// the verdict's units: the part of the gap that two string models with the same physics do not
+    /// already leave between them. Reported beside the gaps; no fit or test uses it.
+    GapSummary beyondToleranceBefore, beyondToleranceCalibrated, beyondToleranceAfter;
     std::array<std::string, kFeatureCount> whereBefore, whereAfter;
     SearchResult search;
     std::vector<GapSummary> stepGaps; ///< over all used trials after each adopted effect

@@ -129,6 +129,9 @@ nlohmann::json discoveryJson(const Discovery& d, const Dataset& dataset)
     if (!d.search.lastTried.empty())
         j["notAdopted"] = tried(d.search.lastTried);
     j["gapAfter"] = d.gapAfter.overall;
+    j["gapBeyondModelForm"] = {{"before", d.beyondToleranceBefore.overall},
+                               {"calibrated", d.beyondToleranceCalibrated.overall},
+                               {"after", d.beyondToleranceAfter.overall}};
     j["remainingGap"] = {
         {"pValue", d.remaining.pValue},
         {"feature", d.remaining.feature < kFeatureCount ? featureName(d.remaining.feature) : ""},
@@ -218,7 +221,10 @@ std::string discoveryMarkdown(const Discovery& d, const Dataset& dataset,
     m += "## Verdict: " + d.status + "\n\n";
     m += "Overall gap " + number(d.gapBefore.overall) + " before, " + number(d.gapCalibrated.overall) +
          " after calibration, " + number(d.gapAfter.overall) + " after (" + std::string(kGapDefinition) +
-         ").\n\n";
+         "). Beyond the model-form tolerance (the scatter widened by how far two string models with the same "
+         "physics differ, the verdict's units): " +
+         number(d.beyondToleranceBefore.overall) + " before, " + number(d.beyondToleranceCalibrated.overall) +
+         " after calibration, " + number(d.beyondToleranceAfter.overall) + " after.\n\n";
     m += "## Calibration\n\nWhat a laboratory knows only to a tolerance, fitted on the training half within "
          "its prior before any effect was tried (training objective " +
          number(d.calibration.objectiveBefore) + " -> " + number(d.calibration.objectiveAfter) + ", " +

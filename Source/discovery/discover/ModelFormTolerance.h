@@ -25,7 +25,8 @@
 //
 // Only the verdict (no-significant-discrepancy or unexplained) uses it: fits, the paired test that names an
 // effect and the gaps reported stay in units of the measurement's own scatter, so a systematic misfit that
-// an effect explains counts in full there.
+// an effect explains counts in full there. The report gives the gaps in its units too, beside them
+// (`gapBeyondModelForm`): how much of a gap no second model of the same physics would leave anyway.
 // JUCE-free.
 #include <array>
 
