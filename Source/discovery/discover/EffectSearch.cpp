@@ -344,14 +344,14 @@ std::string describeEvidence(const EffectScore& s, double alpha)
     if (first)
         text += "no single feature changed by more than 10 %";
     char tail[320];
-    std::snprintf(tail, sizeof(tail),
-                  "; %s the mean normalised squared error fell by %.0f %%; paired sign-flip test p = %.2g "
-                  "(threshold %.2g)",
-                  s.crossFitted
-                      ? "cross-fitted (the effect also fitted on the held-out half and scored on the "
+    std::snprintf(
+        tail, sizeof(tail),
+        "; %s the mean normalised squared error fell by %.0f %%; paired sign-flip test p = %.2g "
+        "(threshold %.2g)",
+        s.crossFitted ? "cross-fitted (the effect also fitted on the held-out half and scored on the "
                         "training half), over both halves"
                       : "over the held-out half",
-                  100.0 * s.heldOutGain, s.pValue, kHalfDecides * alpha);
+        100.0 * s.heldOutGain, s.pValue, (s.crossFitted ? 1.0 - kHalfDecides : kHalfDecides) * alpha);
     return text + tail;
 }
 

@@ -33,11 +33,11 @@
 //          generator's Schelleng sets, seed 31: hertz contact +26.5 %, p 0.0028 on the held-out half against
 //          a bar of 0.0017; cross-fitted +32 %, p 5e-5, named; seed 36, damping: +25 %, p 0.0023 on one
 //          half, +16 %, p 0.0039 over both, not named: the second half did not bear the first out). The
-//          two routes share alpha (each alpha / 2), so
-//          the chance of naming an effect that does not help stays below alpha whatever the screen: an
-//          effect is named only where one of two tests at alpha / 2 rejects. The halves' fits depend on each
-//          other's trials only through an effect's few parameters, which the sign-flip test treats as
-//          independent (the usual caveat of a cross-validated test; the negative controls check it).
+//          two routes share alpha (each alpha / 2), so the chance of naming an effect that does not help
+//          stays below alpha whatever the screen: an effect is named only where one of two tests at
+//          alpha / 2 rejects. The halves' fits depend on each other's trials only through an effect's few
+//          parameters, which the sign-flip test treats as independent (the usual caveat of a
+//          cross-validated test; the negative controls check it).
 //   Stop:  after three effects, when no candidate is significant, or when the held-out gap of the model with
 //          the adopted effects is 0 (within the measurement's scatter on every feature).
 // JUCE-free.
