@@ -24,7 +24,7 @@ void BridgeBody::configure(const BodyParameters& body, double sampleRate, double
         gain_.push_back(1.0 / mode.effectiveMass);
         radiation.push_back(pressurePerAcceleration(mode, body.radiation));
     }
-    while (!specs.empty() && specs.size() % 8 != 0)
+    while (!specs.empty() && static_cast<int>(specs.size()) % kModalBlock != 0)
     {
         specs.push_back(specs.back());
         gain_.push_back(0.0); // silent padding: never driven, so its state stays zero

@@ -8,10 +8,22 @@
 namespace rosin::physics
 {
 
+namespace
+{
+// Four modes per pass, each with its own accumulators, so consecutive modes do not wait on one sum. assign()
+// rounds the modes up to whole passes (the banks are padded far enough), so the passes need no tail.
+constexpr int kUnroll = 4;
+} // namespace
+
 void LaneModes::assign(const ModalBank& bank, const ModalReal* a, const ModalReal* b, const OutputWeights* o1,
                        const OutputWeights* o2, const OutputWeights* o3)
 {
+    // The bank's trailing silent modes (padding to the one-voice kernels' blocks, modes parked above the
+    // limit) are never driven, so their state stays zero: leaving them out is exact.
     modes = bank.size();
+    while (modes > 0 && a[modes - 1] == ModalReal(0) && (b == nullptr || b[modes - 1] == ModalReal(0)))
+        --modes;
+    modes = (modes + kUnroll - 1) / kUnroll * kUnroll;
     pRe = bank.pRe;
     pIm = bank.pIm;
     const auto T = static_cast<ModalReal>(bank.timeStep());
@@ -41,9 +53,6 @@ void LaneModes::resetLane(int lane) noexcept
 
 namespace
 {
-// Four modes per pass, each with its own accumulators, so consecutive modes do not wait on one sum. Banks are
-// padded to whole vectors of modes (multiples of 8), so the passes need no tail.
-constexpr int kUnroll = 4;
 
 // `inputs` gains (1 or 2) and `outputs` weights (1 to 3): w~ <- p (w~ + x) per mode, outputs summed per lane.
 template <int inputs, int outputs>

@@ -1,6 +1,9 @@
 #include "ModalKernels.h"
 
+#include <array>
+
 #include "KernelDispatch.h"
+#include "VectorBlock.h"
 
 namespace rosin::physics
 {
@@ -9,97 +12,90 @@ namespace
 {
 const SimdLevel kLevel = simdLevel(); // chosen once, at load time
 
-ROSIN_KERNEL_BODY TwoSums advanceTwoInputsTwoOutputsBody(ModalBank& bank, const ModalReal* gainA, double a,
-                                                         const ModalReal* gainB, double b,
-                                                         const OutputWeights& o1,
-                                                         const OutputWeights& o2) noexcept
+// kModalBlock modes as one value (VectorBlock.h). Each output keeps one partial sum per lane over the blocks
+// and adds the lanes as a tree at the end.
+using ModalBlock = VectorBlock<ModalReal, kModalBlock>;
+
+/// x_n = gainA_n a (+ gainB_n b); w~_n <- p_n (w~_n + T x_n); returns sum_n Re(o_n w~_n) for each output.
+/// Whole blocks run as vectors; a bank that is not padded to whole blocks (the rig's one mode) ends in a
+/// scalar tail.
+template <int inputs, int outputs>
+ROSIN_KERNEL_BODY std::array<double, outputs> advanceModes(ModalBank& bank, const ModalReal* gainA, double a,
+                                                           const ModalReal* gainB, double b,
+                                                           const OutputWeights* const (&o)[outputs]) noexcept
 {
     const int n = bank.size();
+    const int whole = n - n % kModalBlock;
     ModalReal* __restrict wr = bank.wRe.data();
     ModalReal* __restrict wi = bank.wIm.data();
     const ModalReal* __restrict pr = bank.pRe.data();
     const ModalReal* __restrict pi = bank.pIm.data();
     const auto T = static_cast<ModalReal>(bank.timeStep());
     const auto fa = static_cast<ModalReal>(a), fb = static_cast<ModalReal>(b);
-    const ModalReal* __restrict o1r = o1.re.data();
-    const ModalReal* __restrict o1i = o1.im.data();
-    const ModalReal* __restrict o2r = o2.re.data();
-    const ModalReal* __restrict o2i = o2.im.data();
-    ModalReal s1 = 0, s2 = 0;
-#pragma omp simd reduction(+ : s1, s2)
-    for (int k = 0; k < n; ++k)
+    const ModalReal* oRe[outputs];
+    const ModalReal* oIm[outputs];
+    for (int m = 0; m < outputs; ++m)
+        oRe[m] = o[m]->re.data(), oIm[m] = o[m]->im.data();
+    ModalBlock sums[outputs] = {};
+    for (int k = 0; k < whole; k += kModalBlock)
     {
-        const ModalReal x = gainA[k] * fa + gainB[k] * fb;
-        const ModalReal kicked = wr[k] + T * x; // w~[k+1] = p (w~[k] + T x[k])
+        ModalBlock x = loadBlock<ModalBlock>(gainA + k) * fa;
+        if constexpr (inputs == 2)
+            x += loadBlock<ModalBlock>(gainB + k) * fb;
+        const ModalBlock oldIm = loadBlock<ModalBlock>(wi + k);
+        const ModalBlock kicked = loadBlock<ModalBlock>(wr + k) + T * x; // w~[k+1] = p (w~[k] + T x[k])
+        const ModalBlock re = loadBlock<ModalBlock>(pr + k), im = loadBlock<ModalBlock>(pi + k);
+        const ModalBlock nr = re * kicked - im * oldIm;
+        const ModalBlock ni = re * oldIm + im * kicked;
+        storeBlock<ModalBlock>(wr + k, nr);
+        storeBlock<ModalBlock>(wi + k, ni);
+        for (int m = 0; m < outputs; ++m)
+            sums[m] += loadBlock<ModalBlock>(oRe[m] + k) * nr - loadBlock<ModalBlock>(oIm[m] + k) * ni;
+    }
+    ModalReal tail[outputs] = {};
+    for (int k = whole; k < n; ++k)
+    {
+        ModalReal x = gainA[k] * fa;
+        if constexpr (inputs == 2)
+            x += gainB[k] * fb;
+        const ModalReal kicked = wr[k] + T * x;
         const ModalReal nr = pr[k] * kicked - pi[k] * wi[k];
         const ModalReal ni = pr[k] * wi[k] + pi[k] * kicked;
         wr[k] = nr;
         wi[k] = ni;
-        s1 += o1r[k] * nr - o1i[k] * ni;
-        s2 += o2r[k] * nr - o2i[k] * ni;
+        for (int m = 0; m < outputs; ++m)
+            tail[m] += oRe[m][k] * nr - oIm[m][k] * ni;
     }
-    return {s1, s2};
+    std::array<double, outputs> out;
+    for (int m = 0; m < outputs; ++m)
+        out[m] = static_cast<double>(sumOfLanes<ModalReal, kModalBlock>(sums[m]) + tail[m]);
+    return out;
+}
+
+ROSIN_KERNEL_BODY TwoSums advanceTwoInputsTwoOutputsBody(ModalBank& bank, const ModalReal* gainA, double a,
+                                                         const ModalReal* gainB, double b,
+                                                         const OutputWeights& o1,
+                                                         const OutputWeights& o2) noexcept
+{
+    const OutputWeights* const o[] = {&o1, &o2};
+    const auto s = advanceModes<2, 2>(bank, gainA, a, gainB, b, o);
+    return {s[0], s[1]};
 }
 
 ROSIN_KERNEL_BODY double advanceOneInputOneOutputBody(ModalBank& bank, const ModalReal* gain, double a,
                                                       const OutputWeights& o1) noexcept
 {
-    const int n = bank.size();
-    ModalReal* __restrict wr = bank.wRe.data();
-    ModalReal* __restrict wi = bank.wIm.data();
-    const ModalReal* __restrict pr = bank.pRe.data();
-    const ModalReal* __restrict pi = bank.pIm.data();
-    const auto T = static_cast<ModalReal>(bank.timeStep());
-    const auto fa = static_cast<ModalReal>(a);
-    const ModalReal* __restrict o1r = o1.re.data();
-    const ModalReal* __restrict o1i = o1.im.data();
-    ModalReal s1 = 0;
-#pragma omp simd reduction(+ : s1)
-    for (int k = 0; k < n; ++k)
-    {
-        const ModalReal x = gain[k] * fa;
-        const ModalReal kicked = wr[k] + T * x; // w~[k+1] = p (w~[k] + T x[k])
-        const ModalReal nr = pr[k] * kicked - pi[k] * wi[k];
-        const ModalReal ni = pr[k] * wi[k] + pi[k] * kicked;
-        wr[k] = nr;
-        wi[k] = ni;
-        s1 += o1r[k] * nr - o1i[k] * ni;
-    }
-    return s1;
+    const OutputWeights* const o[] = {&o1};
+    return advanceModes<1, 1>(bank, gain, a, nullptr, 0.0, o)[0];
 }
 
 ROSIN_KERNEL_BODY ThreeSums advanceOneInputThreeOutputsBody(ModalBank& bank, const ModalReal* gain, double a,
                                                             const OutputWeights& o1, const OutputWeights& o2,
                                                             const OutputWeights& o3) noexcept
 {
-    const int n = bank.size();
-    ModalReal* __restrict wr = bank.wRe.data();
-    ModalReal* __restrict wi = bank.wIm.data();
-    const ModalReal* __restrict pr = bank.pRe.data();
-    const ModalReal* __restrict pi = bank.pIm.data();
-    const auto T = static_cast<ModalReal>(bank.timeStep());
-    const auto fa = static_cast<ModalReal>(a);
-    const ModalReal* __restrict o1r = o1.re.data();
-    const ModalReal* __restrict o1i = o1.im.data();
-    const ModalReal* __restrict o2r = o2.re.data();
-    const ModalReal* __restrict o2i = o2.im.data();
-    const ModalReal* __restrict o3r = o3.re.data();
-    const ModalReal* __restrict o3i = o3.im.data();
-    ModalReal s1 = 0, s2 = 0, s3 = 0;
-#pragma omp simd reduction(+ : s1, s2, s3)
-    for (int k = 0; k < n; ++k)
-    {
-        const ModalReal x = gain[k] * fa;
-        const ModalReal kicked = wr[k] + T * x; // w~[k+1] = p (w~[k] + T x[k])
-        const ModalReal nr = pr[k] * kicked - pi[k] * wi[k];
-        const ModalReal ni = pr[k] * wi[k] + pi[k] * kicked;
-        wr[k] = nr;
-        wi[k] = ni;
-        s1 += o1r[k] * nr - o1i[k] * ni;
-        s2 += o2r[k] * nr - o2i[k] * ni;
-        s3 += o3r[k] * nr - o3i[k] * ni;
-    }
-    return {s1, s2, s3};
+    const OutputWeights* const o[] = {&o1, &o2, &o3};
+    const auto s = advanceModes<1, 3>(bank, gain, a, nullptr, 0.0, o);
+    return {s[0], s[1], s[2]};
 }
 
 ROSIN_KERNEL_BODY FourSums advanceOneInputFourOutputsBody(ModalBank& bank, const ModalReal* gain, double a,
@@ -107,37 +103,9 @@ ROSIN_KERNEL_BODY FourSums advanceOneInputFourOutputsBody(ModalBank& bank, const
                                                           const OutputWeights& o3,
                                                           const OutputWeights& o4) noexcept
 {
-    const int n = bank.size();
-    ModalReal* __restrict wr = bank.wRe.data();
-    ModalReal* __restrict wi = bank.wIm.data();
-    const ModalReal* __restrict pr = bank.pRe.data();
-    const ModalReal* __restrict pi = bank.pIm.data();
-    const auto T = static_cast<ModalReal>(bank.timeStep());
-    const auto fa = static_cast<ModalReal>(a);
-    const ModalReal* __restrict o1r = o1.re.data();
-    const ModalReal* __restrict o1i = o1.im.data();
-    const ModalReal* __restrict o2r = o2.re.data();
-    const ModalReal* __restrict o2i = o2.im.data();
-    const ModalReal* __restrict o3r = o3.re.data();
-    const ModalReal* __restrict o3i = o3.im.data();
-    const ModalReal* __restrict o4r = o4.re.data();
-    const ModalReal* __restrict o4i = o4.im.data();
-    ModalReal s1 = 0, s2 = 0, s3 = 0, s4 = 0;
-#pragma omp simd reduction(+ : s1, s2, s3, s4)
-    for (int k = 0; k < n; ++k)
-    {
-        const ModalReal x = gain[k] * fa;
-        const ModalReal kicked = wr[k] + T * x; // w~[k+1] = p (w~[k] + T x[k])
-        const ModalReal nr = pr[k] * kicked - pi[k] * wi[k];
-        const ModalReal ni = pr[k] * wi[k] + pi[k] * kicked;
-        wr[k] = nr;
-        wi[k] = ni;
-        s1 += o1r[k] * nr - o1i[k] * ni;
-        s2 += o2r[k] * nr - o2i[k] * ni;
-        s3 += o3r[k] * nr - o3i[k] * ni;
-        s4 += o4r[k] * nr - o4i[k] * ni;
-    }
-    return {s1, s2, s3, s4};
+    const OutputWeights* const o[] = {&o1, &o2, &o3, &o4};
+    const auto s = advanceModes<1, 4>(bank, gain, a, nullptr, 0.0, o);
+    return {s[0], s[1], s[2], s[3]};
 }
 
 ROSIN_KERNEL_VARIANTS(TwoSums, advanceTwoInputsTwoOutputs,

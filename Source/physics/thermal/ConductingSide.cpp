@@ -4,8 +4,53 @@
 #include <algorithm>
 #include <cmath>
 
+#include "../modal/KernelDispatch.h"
+#include "../modal/VectorBlock.h"
+
 namespace rosin::physics
 {
+
+namespace
+{
+const SimdLevel kLevel = simdLevel();
+
+// kTermsPerBlock terms as one value (VectorBlock.h); prepare() pads the terms to whole blocks with silent
+// ones (zero decay and weight).
+constexpr int kTermsPerBlock = 8;
+using TermBlock = VectorBlock<double, kTermsPerBlock>;
+
+// Adding and removing 2^-780 (~1.6e-235) leaves every term above ~4e-219 exactly as it is, rounds smaller
+// ones to multiples of 2^-832 (~3.5e-251) and sends those below half of that to zero: a decaying term leaves
+// the normal range through zero, never through the slow denormals, without a compare in the vector loop.
+constexpr double kFlushOffset = 0x1p-780;
+
+ROSIN_KERNEL_BODY double advanceHistoryBody(double* __restrict h, const double* __restrict r,
+                                            const double* __restrict w, int terms, double scaledFlux,
+                                            double washout) noexcept
+{
+    TermBlock sum = {};
+    for (int m = 0; m < terms; m += kTermsPerBlock)
+    {
+        const TermBlock hm = loadBlock<TermBlock>(h + m);
+        TermBlock u = washout * loadBlock<TermBlock>(r + m) * (hm + loadBlock<TermBlock>(w + m) * scaledFlux);
+        u = (u + kFlushOffset) - kFlushOffset; // keep long silences free of denormals
+        storeBlock(h + m, u);
+        sum += u;
+    }
+    return sumOfLanes<double, kTermsPerBlock>(sum);
+}
+
+ROSIN_KERNEL_VARIANTS(double, advanceHistory,
+                      (double* h, const double* r, const double* w, int terms, double scaledFlux,
+                       double washout),
+                      (h, r, w, terms, scaledFlux, washout))
+
+double advanceHistory(double* h, const double* r, const double* w, int terms, double scaledFlux,
+                      double washout) noexcept
+{
+    ROSIN_KERNEL_DISPATCH(kLevel, advanceHistory, (h, r, w, terms, scaledFlux, washout));
+}
+} // namespace
 
 void ConductingSide::prepare(double radius, const ThermalMaterial& material, double dt)
 {
@@ -13,9 +58,10 @@ void ConductingSide::prepare(double radius, const ThermalMaterial& material, dou
     const auto& c = kernel_.coefficients();
     const auto& tau = kernel_.timeConstants();
     const size_t M = c.size();
-    decay_.resize(M);
-    weight_.resize(M);
-    history_.assign(M, 0.0);
+    const size_t padded = (M + kTermsPerBlock - 1) / kTermsPerBlock * kTermsPerBlock;
+    decay_.assign(padded, 0.0);
+    weight_.assign(padded, 0.0);
+    history_.assign(padded, 0.0);
     for (size_t m = 0; m < M; ++m)
     {
         decay_[m] = std::exp(-dt / tau[m]);
@@ -33,20 +79,8 @@ void ConductingSide::reset() noexcept
 
 void ConductingSide::advance(double scaledFlux, double washout) noexcept
 {
-    double sum = 0.0;
-    double* __restrict h = history_.data();
-    const double* __restrict r = decay_.data();
-    const double* __restrict w = weight_.data();
-    const int M = static_cast<int>(history_.size());
-#pragma omp simd reduction(+ : sum)
-    for (int m = 0; m < M; ++m)
-    {
-        double u = washout * r[m] * (h[m] + w[m] * scaledFlux);
-        u = std::abs(u) < 1e-250 ? 0.0 : u; // keep long silences free of denormals
-        h[m] = u;
-        sum += u;
-    }
-    historySum_ = sum;
+    historySum_ = advanceHistory(history_.data(), decay_.data(), weight_.data(),
+                                 static_cast<int>(history_.size()), scaledFlux, washout);
 }
 
 double ConductingSide::discreteSteadyResistance(double s, double d, double f) const noexcept

@@ -110,11 +110,10 @@ void BowedStringVoice::Impl::buildModes(const VoiceConfig& cfg, double fs)
         while (nTors < cfg.maxTorsionalModes &&
                (nTors + 1) * pi * string.torsionalWaveSpeed / openLength < modeLimit)
             ++nTors;
-    // Pad each bank to a multiple of the widest vector (8 doubles) with silent modes (zero input and output
-    // weights): the kernels then run without scalar tails.
-    auto padded = [](int n) { return (n + 7) / 8 * 8; };
-    nTrans = padded(nTrans);
-    nTors = cfg.torsion ? padded(nTors) : 0;
+    // Pad each bank to whole kernel blocks with silent modes (zero input and output weights): the kernels
+    // then run without scalar tails.
+    nTrans = paddedToWholeBlocks(nTrans);
+    nTors = cfg.torsion ? paddedToWholeBlocks(nTors) : 0;
     transSpecs.assign(nTrans, {});
     transActive.assign(nTrans, 1.0);
     torsSpecs.assign(nTors, {});

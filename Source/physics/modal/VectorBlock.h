@@ -1,0 +1,51 @@
+#pragma once
+// A block of lanes as one value (GCC's vector extension) for the hot kernels compiled per vector unit
+// (KernelDispatch.h): the x86-64-v4 variant holds a 64-byte block in one AVX-512 register, v3 in two AVX2
+// ones, the baseline in four SSE ones, from the same source. Blocks are copied in and out with memcpy, and
+// the helpers are always inlined into one kernel variant, so no call passes a block and no ABI depends on
+// the vector unit (the files that use them silence GCC's ABI note, Source/CMakeLists.txt). sumOfLanes adds
+// the lanes as a tree: a serial chain of log2(lanes) adds, in the same order on every path.
+#include <cstring>
+
+#include "KernelDispatch.h"
+
+namespace rosin::physics
+{
+
+template <typename Scalar, int lanes> struct VectorBlockOf
+{
+    typedef Scalar type __attribute__((vector_size(lanes * sizeof(Scalar))));
+};
+/// `lanes` values of Scalar as one vector value.
+template <typename Scalar, int lanes> using VectorBlock = typename VectorBlockOf<Scalar, lanes>::type;
+
+template <typename Block, typename Scalar> ROSIN_KERNEL_BODY Block loadBlock(const Scalar* p) noexcept
+{
+    Block b;
+    std::memcpy(&b, p, sizeof b);
+    return b;
+}
+
+template <typename Block, typename Scalar>
+ROSIN_KERNEL_BODY void storeBlock(Scalar* p, const Block& b) noexcept
+{
+    std::memcpy(p, &b, sizeof b);
+}
+
+/// The sum of a block's lanes, halving it until one lane is left (the v4 kernels: 512 -> 256 -> 128 bits,
+/// then two steps inside one register).
+template <typename Scalar, int lanes>
+ROSIN_KERNEL_BODY Scalar sumOfLanes(const VectorBlock<Scalar, lanes>& b) noexcept
+{
+    if constexpr (lanes == 1)
+        return b[0];
+    else
+    {
+        VectorBlock<Scalar, lanes / 2> low, high;
+        std::memcpy(&low, &b, sizeof low);
+        std::memcpy(&high, reinterpret_cast<const char*>(&b) + sizeof low, sizeof high);
+        return sumOfLanes<Scalar, lanes / 2>(low + high);
+    }
+}
+
+} // namespace rosin::physics
