@@ -23,6 +23,7 @@
 #include <juce_audio_formats/juce_audio_formats.h>
 
 #include "cli/CliSupport.h"
+#include "physics/modal/SimdLevel.h"
 
 namespace rosin::test
 {
@@ -123,6 +124,43 @@ TEST_F(GoldenRender, EveryFactoryProgramPlaysAsBefore)
           "cello-modified-rod", "violin-thermal", "galluzzo-rig", "schumacher-rig"})
         check(std::string("program-") + program,
               {"render", "--midi", note.string(), "--preset", program, "--tail", "0.05"});
+}
+
+// The kernels add their lanes in one tree whatever the vector width (physics/modal/VectorBlock.h), and the
+// AVX2 and AVX-512 variants both fuse multiply-adds, so those two paths render the same bits: the plugin's
+// engine with four strings and the radiating body (the demo phrase), and every friction law on one string.
+// (The baseline path has no fused multiply-add and rounds differently.) Runs where the CPU has AVX-512.
+TEST(KernelPaths, AvxTwoAndAvxFiveHundredTwelveRenderTheSameBits)
+{
+    if (physics::supportedSimdLevel() != physics::SimdLevel::V4)
+        GTEST_SKIP() << "this CPU has no x86-64-v4 path to compare";
+    const fs::path work = fs::temp_directory_path() / ("rosin-paths-" + std::to_string(::getpid()));
+    fs::create_directories(work);
+    std::vector<std::vector<std::string>> renders = {
+        {"render", "--midi", std::string(ROSIN_DEMO_PHRASE), "--preset", "cello-plastic"}};
+    for (const char* law :
+         {"classical", "reconstructed", "plastic", "viscous", "modified-bow", "modified-rod"})
+        renders.push_back({"render", "--preset", "cello-plastic", "--friction", law, "--gesture",
+                           "steady:speed=0.1,force=1,beta=0.1,seconds=0.25", "--output", "force"});
+    for (std::size_t k = 0; k < renders.size(); ++k)
+    {
+        std::vector<float> audio[2];
+        const char* paths[2] = {"ROSIN_SIMD=x86-64-v3", "ROSIN_SIMD=x86-64-v4"};
+        for (int p = 0; p < 2; ++p)
+        {
+            const fs::path out = work / ("r" + std::to_string(k) + "-" + std::to_string(p) + ".wav");
+            auto args = renders[k];
+            args.insert(args.end(), {"--out", out.string()});
+            const auto result = runRosin(work.string(), args, paths[p]);
+            ASSERT_EQ(result.status, 0) << result.err;
+            audio[p] = readWav(out);
+        }
+        ASSERT_FALSE(audio[0].empty());
+        EXPECT_TRUE(audio[0] == audio[1])
+            << renders[k][1] << " " << renders[k][2] << " " << renders[k][4]
+            << ": the two paths differ, relative rms " << relativeRmsDifference(audio[0], audio[1]);
+    }
+    fs::remove_all(work);
 }
 
 } // namespace

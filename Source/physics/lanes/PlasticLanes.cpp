@@ -7,6 +7,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "../modal/KernelDispatch.h"
+#include "../modal/VectorBlock.h"
 #include "../thermal/Washout.h"
 
 namespace rosin::physics
@@ -45,25 +47,57 @@ void PlasticLanes::SideLanes::resetLane(int l) noexcept
     sum[l] = 0.0;
 }
 
-// ConductingSide::advance for every lane.
-void PlasticLanes::SideLanes::advance(const Lanes& scaledFlux, const Lanes& washout) noexcept
+namespace
 {
-    Lanes total{};
-    const std::size_t M = history.size();
-    for (std::size_t m = 0; m < M; ++m)
+// The lanes stay at x86-64-v3 at most, as their modal kernels do (LaneModes.cpp).
+const SimdLevel kLevel = simdLevel() == SimdLevel::V4 ? SimdLevel::V3 : simdLevel();
+
+// ConductingSide::advance for every lane: history holds `terms` rows of kLanes values, each row taken as
+// vectors of the kernel's width.
+template <int bytes>
+ROSIN_KERNEL_BODY void advanceSideBody(double* __restrict history, const double* __restrict decay,
+                                       const double* __restrict weight, int terms, const double* scaledFlux,
+                                       const double* washout, double* sum) noexcept
+{
+    constexpr int lanes = bytes / static_cast<int>(sizeof(double));
+    constexpr int parts = kLanes / lanes;
+    using Block = VectorBlock<double, lanes>;
+    Block flux[parts], s[parts], total[parts] = {};
+    for (int j = 0; j < parts; ++j)
+        flux[j] = loadBlock<Block>(scaledFlux + j * lanes), s[j] = loadBlock<Block>(washout + j * lanes);
+    for (int m = 0; m < terms; ++m)
     {
-        const double r = decay[m], w = weight[m];
-        double* __restrict u = history[m].data();
-#pragma omp simd
-        for (int l = 0; l < kLanes; ++l)
+        double* row = history + static_cast<std::ptrdiff_t>(m) * kLanes;
+#pragma GCC unroll 4
+        for (int j = 0; j < parts; ++j)
         {
-            double next = washout[l] * r * (u[l] + w * scaledFlux[l]);
-            next = std::abs(next) < 1e-250 ? 0.0 : next; // keep long silences free of denormals
-            u[l] = next;
-            total[l] += next;
+            const Block u = loadBlock<Block>(row + j * lanes);
+            const Block next = flushTinyToZero(s[j] * decay[m] * (u + weight[m] * flux[j]));
+            storeBlock(row + j * lanes, next);
+            total[j] += next;
         }
     }
-    sum = total;
+    for (int j = 0; j < parts; ++j)
+        storeBlock(sum + j * lanes, total[j]);
+}
+
+ROSIN_KERNEL_VARIANTS_BY_WIDTH(void, advanceSide,
+                               (double* history, const double* decay, const double* weight, int terms,
+                                const double* scaledFlux, const double* washout, double* sum),
+                               (history, decay, weight, terms, scaledFlux, washout, sum))
+
+void advanceSide(double* history, const double* decay, const double* weight, int terms,
+                 const double* scaledFlux, const double* washout, double* sum) noexcept
+{
+    ROSIN_KERNEL_DISPATCH(kLevel, advanceSide, (history, decay, weight, terms, scaledFlux, washout, sum));
+}
+} // namespace
+
+void PlasticLanes::SideLanes::advance(const Lanes& scaledFlux, const Lanes& washout) noexcept
+{
+    static_assert(sizeof(Lanes) == kLanes * sizeof(double), "history rows are contiguous");
+    advanceSide(history.empty() ? nullptr : history.front().data(), decay.data(), weight.data(),
+                static_cast<int>(history.size()), scaledFlux.data(), washout.data(), sum.data());
 }
 
 void PlasticLanes::reset() noexcept

@@ -5,6 +5,9 @@
 //
 // ROSIN_KERNEL_VARIANTS(ret, name, (params), (args)) defines name##V4, name##V3 and name##Base from the
 // always-inlined name##Body; ROSIN_KERNEL_DISPATCH(level, name, (args)) calls the one for `level`.
+// ROSIN_KERNEL_VARIANTS_BY_WIDTH does the same for a body templated on its vector width in bytes (64, 32
+// and 16: one AVX-512, AVX2 or SSE register), for kernels written in blocks of that width (VectorBlock.h);
+// GCC splits a block wider than the target's registers poorly.
 #include "SimdLevel.h"
 
 // Clang (the fuzzing build) knows neither arch=x86-64-v4 targets nor those names in __builtin_cpu_supports
@@ -24,6 +27,19 @@
     {                                                                                                        \
         return name##Body args;                                                                              \
     }
+#define ROSIN_KERNEL_VARIANTS_BY_WIDTH(ret, name, params, args)                                              \
+    __attribute__((target("arch=x86-64-v4"))) static ret name##V4 params noexcept                            \
+    {                                                                                                        \
+        return name##Body<64> args;                                                                          \
+    }                                                                                                        \
+    __attribute__((target("arch=x86-64-v3"))) static ret name##V3 params noexcept                            \
+    {                                                                                                        \
+        return name##Body<32> args;                                                                          \
+    }                                                                                                        \
+    static ret name##Base params noexcept                                                                    \
+    {                                                                                                        \
+        return name##Body<16> args;                                                                          \
+    }
 #define ROSIN_KERNEL_DISPATCH(level, name, args)                                                             \
     switch (level)                                                                                           \
     {                                                                                                        \
@@ -41,6 +57,11 @@
     static ret name##Base params noexcept                                                                    \
     {                                                                                                        \
         return name##Body args;                                                                              \
+    }
+#define ROSIN_KERNEL_VARIANTS_BY_WIDTH(ret, name, params, args)                                              \
+    static ret name##Base params noexcept                                                                    \
+    {                                                                                                        \
+        return name##Body<16> args;                                                                          \
     }
 #define ROSIN_KERNEL_DISPATCH(level, name, args) return ((void)(level), name##Base args)
 #endif

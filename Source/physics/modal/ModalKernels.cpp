@@ -12,18 +12,20 @@ namespace
 {
 const SimdLevel kLevel = simdLevel(); // chosen once, at load time
 
-// kModalBlock modes as one value (VectorBlock.h). Each output keeps one partial sum per lane over the blocks
-// and adds the lanes as a tree at the end.
-using ModalBlock = VectorBlock<ModalReal, kModalBlock>;
-
 /// x_n = gainA_n a (+ gainB_n b); w~_n <- p_n (w~_n + T x_n); returns sum_n Re(o_n w~_n) for each output.
-/// Whole blocks run as vectors; a bank that is not padded to whole blocks (the rig's one mode) ends in a
-/// scalar tail.
-template <int inputs, int outputs>
+/// Modes go kModalBlock at a time, as kModalBlock / lanes vectors of `bytes` each (VectorBlock.h), each
+/// output with one partial sum per vector; at the end the partial sums are halved into one and its lanes
+/// halved into one value. That tree pairs mode l with l + 8, then l + 4, l + 2 and l + 1 whatever the width,
+/// so every vector unit adds in the same order. A bank that is not padded to whole blocks (the rig's one
+/// mode) ends in a scalar tail.
+template <int bytes, int inputs, int outputs>
 ROSIN_KERNEL_BODY std::array<double, outputs> advanceModes(ModalBank& bank, const ModalReal* gainA, double a,
                                                            const ModalReal* gainB, double b,
                                                            const OutputWeights* const (&o)[outputs]) noexcept
 {
+    constexpr int lanes = bytes / static_cast<int>(sizeof(ModalReal));
+    constexpr int parts = kModalBlock / lanes;
+    using Block = VectorBlock<ModalReal, lanes>;
     const int n = bank.size();
     const int whole = n - n % kModalBlock;
     ModalReal* __restrict wr = bank.wRe.data();
@@ -36,21 +38,26 @@ ROSIN_KERNEL_BODY std::array<double, outputs> advanceModes(ModalBank& bank, cons
     const ModalReal* oIm[outputs];
     for (int m = 0; m < outputs; ++m)
         oRe[m] = o[m]->re.data(), oIm[m] = o[m]->im.data();
-    ModalBlock sums[outputs] = {};
-    for (int k = 0; k < whole; k += kModalBlock)
+    Block sums[outputs][parts] = {};
+    for (int k0 = 0; k0 < whole; k0 += kModalBlock)
     {
-        ModalBlock x = loadBlock<ModalBlock>(gainA + k) * fa;
-        if constexpr (inputs == 2)
-            x += loadBlock<ModalBlock>(gainB + k) * fb;
-        const ModalBlock oldIm = loadBlock<ModalBlock>(wi + k);
-        const ModalBlock kicked = loadBlock<ModalBlock>(wr + k) + T * x; // w~[k+1] = p (w~[k] + T x[k])
-        const ModalBlock re = loadBlock<ModalBlock>(pr + k), im = loadBlock<ModalBlock>(pi + k);
-        const ModalBlock nr = re * kicked - im * oldIm;
-        const ModalBlock ni = re * oldIm + im * kicked;
-        storeBlock<ModalBlock>(wr + k, nr);
-        storeBlock<ModalBlock>(wi + k, ni);
-        for (int m = 0; m < outputs; ++m)
-            sums[m] += loadBlock<ModalBlock>(oRe[m] + k) * nr - loadBlock<ModalBlock>(oIm[m] + k) * ni;
+#pragma GCC unroll 4
+        for (int j = 0; j < parts; ++j)
+        {
+            const int k = k0 + j * lanes;
+            Block x = loadBlock<Block>(gainA + k) * fa;
+            if constexpr (inputs == 2)
+                x += loadBlock<Block>(gainB + k) * fb;
+            const Block oldIm = loadBlock<Block>(wi + k);
+            const Block kicked = loadBlock<Block>(wr + k) + T * x; // w~[k+1] = p (w~[k] + T x[k])
+            const Block re = loadBlock<Block>(pr + k), im = loadBlock<Block>(pi + k);
+            const Block nr = re * kicked - im * oldIm;
+            const Block ni = re * oldIm + im * kicked;
+            storeBlock<Block>(wr + k, nr);
+            storeBlock<Block>(wi + k, ni);
+            for (int m = 0; m < outputs; ++m)
+                sums[m][j] += loadBlock<Block>(oRe[m] + k) * nr - loadBlock<Block>(oIm[m] + k) * ni;
+        }
     }
     ModalReal tail[outputs] = {};
     for (int k = whole; k < n; ++k)
@@ -68,61 +75,65 @@ ROSIN_KERNEL_BODY std::array<double, outputs> advanceModes(ModalBank& bank, cons
     }
     std::array<double, outputs> out;
     for (int m = 0; m < outputs; ++m)
-        out[m] = static_cast<double>(sumOfLanes<ModalReal, kModalBlock>(sums[m]) + tail[m]);
+        out[m] = static_cast<double>(sumOfParts<ModalReal, lanes, parts>(sums[m]) + tail[m]);
     return out;
 }
 
+template <int bytes>
 ROSIN_KERNEL_BODY TwoSums advanceTwoInputsTwoOutputsBody(ModalBank& bank, const ModalReal* gainA, double a,
                                                          const ModalReal* gainB, double b,
                                                          const OutputWeights& o1,
                                                          const OutputWeights& o2) noexcept
 {
     const OutputWeights* const o[] = {&o1, &o2};
-    const auto s = advanceModes<2, 2>(bank, gainA, a, gainB, b, o);
+    const auto s = advanceModes<bytes, 2, 2>(bank, gainA, a, gainB, b, o);
     return {s[0], s[1]};
 }
 
+template <int bytes>
 ROSIN_KERNEL_BODY double advanceOneInputOneOutputBody(ModalBank& bank, const ModalReal* gain, double a,
                                                       const OutputWeights& o1) noexcept
 {
     const OutputWeights* const o[] = {&o1};
-    return advanceModes<1, 1>(bank, gain, a, nullptr, 0.0, o)[0];
+    return advanceModes<bytes, 1, 1>(bank, gain, a, nullptr, 0.0, o)[0];
 }
 
+template <int bytes>
 ROSIN_KERNEL_BODY ThreeSums advanceOneInputThreeOutputsBody(ModalBank& bank, const ModalReal* gain, double a,
                                                             const OutputWeights& o1, const OutputWeights& o2,
                                                             const OutputWeights& o3) noexcept
 {
     const OutputWeights* const o[] = {&o1, &o2, &o3};
-    const auto s = advanceModes<1, 3>(bank, gain, a, nullptr, 0.0, o);
+    const auto s = advanceModes<bytes, 1, 3>(bank, gain, a, nullptr, 0.0, o);
     return {s[0], s[1], s[2]};
 }
 
+template <int bytes>
 ROSIN_KERNEL_BODY FourSums advanceOneInputFourOutputsBody(ModalBank& bank, const ModalReal* gain, double a,
                                                           const OutputWeights& o1, const OutputWeights& o2,
                                                           const OutputWeights& o3,
                                                           const OutputWeights& o4) noexcept
 {
     const OutputWeights* const o[] = {&o1, &o2, &o3, &o4};
-    const auto s = advanceModes<1, 4>(bank, gain, a, nullptr, 0.0, o);
+    const auto s = advanceModes<bytes, 1, 4>(bank, gain, a, nullptr, 0.0, o);
     return {s[0], s[1], s[2], s[3]};
 }
 
-ROSIN_KERNEL_VARIANTS(TwoSums, advanceTwoInputsTwoOutputs,
-                      (ModalBank & bank, const ModalReal* gainA, double a, const ModalReal* gainB, double b,
-                       const OutputWeights& o1, const OutputWeights& o2),
-                      (bank, gainA, a, gainB, b, o1, o2))
-ROSIN_KERNEL_VARIANTS(double, advanceOneInputOneOutput,
-                      (ModalBank & bank, const ModalReal* gain, double a, const OutputWeights& o1),
-                      (bank, gain, a, o1))
-ROSIN_KERNEL_VARIANTS(ThreeSums, advanceOneInputThreeOutputs,
-                      (ModalBank & bank, const ModalReal* gain, double a, const OutputWeights& o1,
-                       const OutputWeights& o2, const OutputWeights& o3),
-                      (bank, gain, a, o1, o2, o3))
-ROSIN_KERNEL_VARIANTS(FourSums, advanceOneInputFourOutputs,
-                      (ModalBank & bank, const ModalReal* gain, double a, const OutputWeights& o1,
-                       const OutputWeights& o2, const OutputWeights& o3, const OutputWeights& o4),
-                      (bank, gain, a, o1, o2, o3, o4))
+ROSIN_KERNEL_VARIANTS_BY_WIDTH(TwoSums, advanceTwoInputsTwoOutputs,
+                               (ModalBank & bank, const ModalReal* gainA, double a, const ModalReal* gainB,
+                                double b, const OutputWeights& o1, const OutputWeights& o2),
+                               (bank, gainA, a, gainB, b, o1, o2))
+ROSIN_KERNEL_VARIANTS_BY_WIDTH(double, advanceOneInputOneOutput,
+                               (ModalBank & bank, const ModalReal* gain, double a, const OutputWeights& o1),
+                               (bank, gain, a, o1))
+ROSIN_KERNEL_VARIANTS_BY_WIDTH(ThreeSums, advanceOneInputThreeOutputs,
+                               (ModalBank & bank, const ModalReal* gain, double a, const OutputWeights& o1,
+                                const OutputWeights& o2, const OutputWeights& o3),
+                               (bank, gain, a, o1, o2, o3))
+ROSIN_KERNEL_VARIANTS_BY_WIDTH(FourSums, advanceOneInputFourOutputs,
+                               (ModalBank & bank, const ModalReal* gain, double a, const OutputWeights& o1,
+                                const OutputWeights& o2, const OutputWeights& o3, const OutputWeights& o4),
+                               (bank, gain, a, o1, o2, o3, o4))
 } // namespace
 
 TwoSums advanceTwoInputsTwoOutputs(ModalBank& bank, const ModalReal* gainA, double a, const ModalReal* gainB,

@@ -1,8 +1,9 @@
 #pragma once
 // Which vector-instruction level the hot kernels (ModalKernels, LaneModes) run at. By default the best this
 // CPU supports; ROSIN_SIMD=default|x86-64-v3|x86-64-v4 forces a lower one, so that one machine can run the
-// suite on every path a user's machine might take (the single-precision sums round differently per path, and
-// chaotic transients amplify that). Read once, before the first kernel call.
+// suite on every path a user's machine might take (the baseline path, without fused multiply-adds, rounds
+// differently from the other two, and chaotic transients amplify that). Read once, before the first kernel
+// call.
 namespace rosin::physics
 {
 

@@ -14,36 +14,39 @@ namespace
 {
 const SimdLevel kLevel = simdLevel();
 
-// kTermsPerBlock terms as one value (VectorBlock.h); prepare() pads the terms to whole blocks with silent
-// ones (zero decay and weight).
+// Terms go kTermsPerBlock at a time, as vectors of the kernel's width (VectorBlock.h), summed in one order
+// on every vector unit; prepare() pads the terms to whole blocks with silent ones (zero decay and weight).
 constexpr int kTermsPerBlock = 8;
-using TermBlock = VectorBlock<double, kTermsPerBlock>;
 
-// Adding and removing 2^-780 (~1.6e-235) leaves every term above ~4e-219 exactly as it is, rounds smaller
-// ones to multiples of 2^-832 (~3.5e-251) and sends those below half of that to zero: a decaying term leaves
-// the normal range through zero, never through the slow denormals, without a compare in the vector loop.
-constexpr double kFlushOffset = 0x1p-780;
-
+template <int bytes>
 ROSIN_KERNEL_BODY double advanceHistoryBody(double* __restrict h, const double* __restrict r,
                                             const double* __restrict w, int terms, double scaledFlux,
                                             double washout) noexcept
 {
-    TermBlock sum = {};
-    for (int m = 0; m < terms; m += kTermsPerBlock)
+    constexpr int lanes = bytes / static_cast<int>(sizeof(double));
+    constexpr int parts = kTermsPerBlock / lanes;
+    using Block = VectorBlock<double, lanes>;
+    Block sums[parts] = {};
+    for (int m0 = 0; m0 < terms; m0 += kTermsPerBlock)
     {
-        const TermBlock hm = loadBlock<TermBlock>(h + m);
-        TermBlock u = washout * loadBlock<TermBlock>(r + m) * (hm + loadBlock<TermBlock>(w + m) * scaledFlux);
-        u = (u + kFlushOffset) - kFlushOffset; // keep long silences free of denormals
-        storeBlock(h + m, u);
-        sum += u;
+#pragma GCC unroll 4
+        for (int j = 0; j < parts; ++j)
+        {
+            const int m = m0 + j * lanes;
+            const Block hm = loadBlock<Block>(h + m);
+            Block u = washout * loadBlock<Block>(r + m) * (hm + loadBlock<Block>(w + m) * scaledFlux);
+            u = flushTinyToZero(u); // keep long silences free of denormals
+            storeBlock(h + m, u);
+            sums[j] += u;
+        }
     }
-    return sumOfLanes<double, kTermsPerBlock>(sum);
+    return sumOfParts<double, lanes, parts>(sums);
 }
 
-ROSIN_KERNEL_VARIANTS(double, advanceHistory,
-                      (double* h, const double* r, const double* w, int terms, double scaledFlux,
-                       double washout),
-                      (h, r, w, terms, scaledFlux, washout))
+ROSIN_KERNEL_VARIANTS_BY_WIDTH(double, advanceHistory,
+                               (double* h, const double* r, const double* w, int terms, double scaledFlux,
+                                double washout),
+                               (h, r, w, terms, scaledFlux, washout))
 
 double advanceHistory(double* h, const double* r, const double* w, int terms, double scaledFlux,
                       double washout) noexcept
