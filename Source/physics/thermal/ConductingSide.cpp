@@ -91,7 +91,9 @@ double ConductingSide::discreteSteadyResistance(double s, double d, double f) co
     double R = kernel_.firstStepWeight() * f;
     const auto& c = kernel_.coefficients();
     const auto& tau = kernel_.timeConstants();
-    for (size_t m = 0; m < decay_.size(); ++m) // at s = 1, r w / (1 - r) = r c tau without the cancellation
+    // The fitted terms only (decay_ and weight_ carry silent padding); at s = 1, r w / (1 - r) = r c tau
+    // without the cancellation.
+    for (size_t m = 0; m < c.size(); ++m)
         R +=
             s == 1.0 ? d * decay_[m] * c[m] * tau[m] : d * s * decay_[m] * weight_[m] / (1.0 - s * decay_[m]);
     return R;

@@ -33,8 +33,10 @@ class ConductingSide
                                     double firstStepFactor) const noexcept;
 
     const ConductionKernel& kernel() const noexcept { return kernel_; }
-    const std::vector<double>& decays() const noexcept { return decay_; }   ///< r_m
-    const std::vector<double>& weights() const noexcept { return weight_; } ///< w_m, K/W
+    /// r_m and w_m, padded with silent terms (0, 0) to whole kernel blocks: longer than
+    /// kernel().coefficients().
+    const std::vector<double>& decays() const noexcept { return decay_; }
+    const std::vector<double>& weights() const noexcept { return weight_; } ///< w_m, K/W (padded likewise)
 
   private:
     ConductionKernel kernel_;
