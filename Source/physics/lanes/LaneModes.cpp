@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "../modal/KernelDispatch.h"
+#include "../modal/VectorBlock.h"
 
 namespace rosin::physics
 {
@@ -23,7 +24,7 @@ void LaneModes::assign(const ModalBank& bank, const ModalReal* a, const ModalRea
     modes = bank.size();
     while (modes > 0 && a[modes - 1] == ModalReal(0) && (b == nullptr || b[modes - 1] == ModalReal(0)))
         --modes;
-    modes = (modes + kUnroll - 1) / kUnroll * kUnroll;
+    modes = paddedToWholeBlocks(modes, kUnroll);
     pRe = bank.pRe;
     pIm = bank.pIm;
     const auto T = static_cast<ModalReal>(bank.timeStep());
@@ -53,7 +54,6 @@ void LaneModes::resetLane(int lane) noexcept
 
 namespace
 {
-
 // `inputs` gains (1 or 2) and `outputs` weights (1 to 3): w~ <- p (w~ + x) per mode, outputs summed per lane.
 template <int inputs, int outputs>
 inline __attribute__((always_inline)) void advance(LaneModes& bank, const LaneValues& inA,

@@ -28,15 +28,9 @@ namespace rosin::physics
 using ModalReal = float;
 
 /// The modal kernels advance modes in blocks of this many (one AVX-512 register of floats). Owners pad their
-/// banks to whole blocks with silent modes (zero input gains and output weights), so no scalar tail runs;
-/// an unpadded bank is still advanced correctly, its last partial block one mode at a time.
+/// banks to whole blocks with silent modes (zero input gains, so their state stays zero), so no scalar tail
+/// runs; an unpadded bank is still advanced correctly, its last partial block one mode at a time.
 inline constexpr int kModalBlock = 16;
-
-/// n rounded up to whole blocks.
-constexpr int paddedToWholeBlocks(int n) noexcept
-{
-    return (n + kModalBlock - 1) / kModalBlock * kModalBlock;
-}
 
 /// What a mode output measures.
 enum class ModalOutput

@@ -12,6 +12,12 @@
 namespace rosin::physics
 {
 
+/// n rounded up to whole blocks of `block` (the kernels' padding: modes, heat terms, lane passes).
+constexpr int paddedToWholeBlocks(int n, int block) noexcept
+{
+    return (n + block - 1) / block * block;
+}
+
 template <typename Scalar, int lanes> struct VectorBlockOf
 {
     typedef Scalar type __attribute__((vector_size(lanes * sizeof(Scalar))));

@@ -61,7 +61,7 @@ void ConductingSide::prepare(double radius, const ThermalMaterial& material, dou
     const auto& c = kernel_.coefficients();
     const auto& tau = kernel_.timeConstants();
     const size_t M = c.size();
-    const size_t padded = (M + kTermsPerBlock - 1) / kTermsPerBlock * kTermsPerBlock;
+    const auto padded = static_cast<size_t>(paddedToWholeBlocks(static_cast<int>(M), kTermsPerBlock));
     decay_.assign(padded, 0.0);
     weight_.assign(padded, 0.0);
     history_.assign(padded, 0.0);

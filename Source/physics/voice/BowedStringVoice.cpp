@@ -7,6 +7,7 @@
 
 #include "../body/BridgeBody.h"
 #include "../modal/ModalKernels.h"
+#include "../modal/VectorBlock.h"
 #include "../units/Range.h"
 
 namespace rosin::physics
@@ -112,8 +113,8 @@ void BowedStringVoice::Impl::buildModes(const VoiceConfig& cfg, double fs)
             ++nTors;
     // Pad each bank to whole kernel blocks with silent modes (zero input and output weights): the kernels
     // then run without scalar tails.
-    nTrans = paddedToWholeBlocks(nTrans);
-    nTors = cfg.torsion ? paddedToWholeBlocks(nTors) : 0;
+    nTrans = paddedToWholeBlocks(nTrans, kModalBlock);
+    nTors = cfg.torsion ? paddedToWholeBlocks(nTors, kModalBlock) : 0;
     transSpecs.assign(nTrans, {});
     transActive.assign(nTrans, 1.0);
     torsSpecs.assign(nTors, {});
