@@ -1,8 +1,8 @@
 // Issue 3's CPU figure through the plugin itself: RosinProcessor::processBlock at 48 kHz in 128-sample
-// blocks, the cello with all four strings bowed (a held four-note chord, sustain pedal down), body and
-// plastic thermal friction, with everything the audio thread does (gesture, ears, regime readouts, output
-// stage). Printed as % of one core and as a ratio to STK's Bowed run in the same process (the machines are
-// noisy).
+// blocks, the cello with body and plastic thermal friction, with everything the audio thread does (gesture,
+// ears, regime readouts, output stage). Two loads: all four strings bowed (a held four-note chord, sustain
+// pedal down; the worst case) and a solo line (one string bowed, three ringing with their bows lifted).
+// Printed as % of one core and as a ratio to STK's Bowed run in the same process (the machines are noisy).
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -45,6 +45,39 @@ void benchCelloChord(benchmark::State& state)
     state.counters["sounding strings"] = processor.activeEngine()->instrument.stringCount();
 }
 
+// A solo line as a cellist plays it: one string bowed (D3), the other three ringing after their notes
+// ended (each was bowed for 0.3 s first, so its contact is warm and its modes are sounding).
+void benchCelloSoloLine(benchmark::State& state)
+{
+    rosin::plugin::RosinProcessor processor;
+    processor.setProgramByName("cello-plastic");
+    processor.setPlayConfigDetails(0, 1, kSampleRate, kBlock);
+    processor.prepareToPlay(kSampleRate, kBlock);
+    juce::AudioBuffer<float> buffer(1, kBlock);
+    juce::MidiBuffer midi;
+    const auto play = [&](double seconds)
+    {
+        for (int k = 0; k < static_cast<int>(seconds * kSampleRate / kBlock); ++k)
+        {
+            processor.processBlock(buffer, midi);
+            midi.clear();
+        }
+    };
+    for (int note : {36, 43, 57})
+        midi.addEvent(juce::MidiMessage::noteOn(1, note, static_cast<juce::uint8>(90)), 0);
+    play(0.3);
+    for (int note : {36, 43, 57})
+        midi.addEvent(juce::MidiMessage::noteOff(1, note), 0);
+    midi.addEvent(juce::MidiMessage::noteOn(1, 50, static_cast<juce::uint8>(90)), 0);
+    play(0.5); // the three bows lifted, the D3 attack over
+    for (auto _ : state)
+    {
+        processor.processBlock(buffer, midi);
+        benchmark::DoNotOptimize(buffer.getReadPointer(0)[0]);
+    }
+    state.SetItemsProcessed(state.iterations() * kBlock);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -56,6 +89,8 @@ int main(int argc, char** argv)
         ->Unit(benchmark::kMicrosecond);
 #endif
     benchmark::RegisterBenchmark("RosinProcessor_cello_4_strings/plastic", benchCelloChord)
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark("RosinProcessor_cello_solo_line/plastic", benchCelloSoloLine)
         ->Unit(benchmark::kMicrosecond);
     const std::string markdown = rosin::bench::takeMarkdownFlag(argc, argv);
     benchmark::Initialize(&argc, argv);

@@ -20,7 +20,8 @@ END = "<!-- benchmark-tables:end -->"
 BENCHMARKS = [
     ("bench_voice", "One voice (cello D3 with the cello body) per friction law, and the four-string cello "
                     "stepped directly"),
-    ("bench_plugin", "The plugin's `processBlock` with the four-string cello, all four strings bowed"),
+    ("bench_plugin", "The plugin's `processBlock` with the four-string cello: all four strings bowed (a held "
+                     "chord), and a solo line (one string bowed, the other three ringing)"),
 ]
 
 

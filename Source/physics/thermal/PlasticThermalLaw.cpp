@@ -61,6 +61,15 @@ JunctionSolution PlasticThermalLaw::step(const JunctionInput& in, double creepRe
     const double twoZ = in.loadSlope;
     if (!thermal_.prepared())
         return {dvh, 0.0, false};
+    if (Fb == 0.0)
+    {
+        // Bow lifted: the contact area pi a(0)^2 is zero, so the limit is zero at any temperature and the
+        // predictor and corrector would both give this; only the heat balance moves on.
+        const JunctionSolution s =
+            creepingSolution(solveCharacteristic(dvh, twoZ, 0.0), safe, creepResistance);
+        thermal_.commit(s, Fb);
+        return s;
+    }
     // A held contact creeps where a creep resistance is given (creepingSolution; 0: none), so the
     // corrector sees the creep's power and the commit takes it.
     // Predictor: temperature with last sample's power (Woodhouse's order, one-sample lag).

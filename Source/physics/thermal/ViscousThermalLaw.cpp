@@ -44,6 +44,14 @@ JunctionSolution ViscousThermalLaw::solve(const JunctionInput& in) noexcept
     const double twoZ = in.loadSlope;
     if (!thermal_.prepared())
         return {dvh, 0.0, false};
+    if (Fb == 0.0)
+    {
+        // Bow lifted: zero contact area, so c = 0 at any temperature and every pass below would give this;
+        // only the heat balance moves on.
+        const JunctionSolution s = solveLinear(dvh, twoZ, 0.0);
+        thermal_.commit(s, Fb);
+        return s;
+    }
     const HeatBalance& heat = thermal_.heat();
     // g(T) = Phi(P(T)) - T: the temperature this step reaches with the power dissipated at viscosity eta(T),
     // minus T. Phi (HeatBalance::predict) is O(1).

@@ -173,6 +173,41 @@ TEST(FrictionLaws, FrictionAlwaysOpposesSliding)
     }
 }
 
+// A lifted bow (Fb = 0) has no contact area (a ~ sqrt(Fb)), so it holds nothing and rubs nothing at any
+// temperature; the warm contact only gives its heat away. Checked against a copy of the law's own heat
+// balance driven with zero power at the same sliding speeds: the law may take any shortcut, but not another
+// path.
+template <class Law> void expectLiftedBowOnlyCools(Law& law)
+{
+    law.prepare(48000.0);
+    for (int k = 0; k < 4800; ++k) // 0.1 s of sliding at 1 N, held at 0.2 m/s by a stiff load line
+        law.solve({0.2, 100.0, 1.0});
+    const double warm = law.contactTemperature();
+    ASSERT_GT(warm, 1.0) << law.name();
+    HeatBalance bare = law.heat();
+    bool noForce = true, sameHeat = true;
+    for (int k = 0; k < 9600; ++k)
+    {
+        const double dvh = 0.3 * std::sin(2.0 * pi * 147.0 * k / 48000.0); // the free string swinging by
+        const JunctionSolution s = law.solve({dvh, 1.0, 0.0});
+        bare.commit(0.0, std::abs(s.dv), 0.0);
+        noForce = noForce && s.frictionForce == 0.0 && s.dv == dvh;
+        sameHeat = sameHeat && law.contactTemperature() == bare.temperature();
+    }
+    EXPECT_TRUE(noForce) << law.name();
+    EXPECT_TRUE(sameHeat) << law.name();
+    EXPECT_LT(law.contactTemperature(), 0.5 * warm) << law.name();
+    EXPECT_GE(law.contactTemperature(), 0.0) << law.name();
+}
+
+TEST(ThermalLaws, ALiftedBowExertsNoForceAndItsContactOnlyCools)
+{
+    PlasticThermalLaw plastic(galluzzoContact());
+    expectLiftedBowOnlyCools(plastic);
+    ViscousThermalLaw viscous(galluzzoContact());
+    expectLiftedBowOnlyCools(viscous);
+}
+
 TEST(FrictionLawFactory, NamesRoundTripAndErrorsListValidNames)
 {
     const std::vector<std::string> expected{"classical", "reconstructed", "plastic",
