@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <utility>
 
 #include <juce_events/juce_events.h>
 
@@ -20,62 +21,67 @@ namespace
 constexpr double kSampleRate = 48000.0;
 constexpr int kBlock = 128;
 
-void benchCelloChord(benchmark::State& state)
+/// The cello-plastic program at `quality`, prepared for 128-sample blocks at 48 kHz, with `play(seconds)` to
+/// run it (the MIDI buffer is sent with the first block) and `time(state)` to measure one block per
+/// iteration.
+struct Session
 {
     rosin::plugin::RosinProcessor processor;
-    processor.setProgramByName("cello-plastic");
-    processor.setPlayConfigDetails(0, 1, kSampleRate, kBlock);
-    processor.prepareToPlay(kSampleRate, kBlock);
-    juce::AudioBuffer<float> buffer(1, kBlock);
+    juce::AudioBuffer<float> buffer{1, kBlock};
     juce::MidiBuffer midi;
-    midi.addEvent(juce::MidiMessage::controllerEvent(1, 64, 127), 0);
-    // C2 G2 D3 A3: one note per string (the chord rule moves none of them).
-    for (int note : {36, 43, 50, 57})
-        midi.addEvent(juce::MidiMessage::noteOn(1, note, static_cast<juce::uint8>(90)), 0);
-    processor.processBlock(buffer, midi);
-    midi.clear();
-    for (int k = 0; k < static_cast<int>(0.5 * kSampleRate / kBlock); ++k) // past the attacks
-        processor.processBlock(buffer, midi);
-    for (auto _ : state)
-    {
-        processor.processBlock(buffer, midi);
-        benchmark::DoNotOptimize(buffer.getReadPointer(0)[0]);
-    }
-    state.SetItemsProcessed(state.iterations() * kBlock);
-    state.counters["sounding strings"] = processor.activeEngine()->instrument.stringCount();
-}
 
-// A solo line as a cellist plays it: one string bowed (D3), the other three ringing after their notes
-// ended (each was bowed for 0.3 s first, so its contact is warm and its modes are sounding).
-void benchCelloSoloLine(benchmark::State& state)
-{
-    rosin::plugin::RosinProcessor processor;
-    processor.setProgramByName("cello-plastic");
-    processor.setPlayConfigDetails(0, 1, kSampleRate, kBlock);
-    processor.prepareToPlay(kSampleRate, kBlock);
-    juce::AudioBuffer<float> buffer(1, kBlock);
-    juce::MidiBuffer midi;
-    const auto play = [&](double seconds)
+    explicit Session(rosin::engine::ModelQuality quality)
+    {
+        processor.setProgramByName("cello-plastic");
+        auto* parameter = processor.parameters().getParameter(rosin::engine::ids::quality);
+        parameter->setValueNotifyingHost(parameter->convertTo0to1(static_cast<float>(quality)));
+        processor.setPlayConfigDetails(0, 1, kSampleRate, kBlock);
+        processor.prepareToPlay(kSampleRate, kBlock);
+    }
+    void play(double seconds)
     {
         for (int k = 0; k < static_cast<int>(seconds * kSampleRate / kBlock); ++k)
         {
             processor.processBlock(buffer, midi);
             midi.clear();
         }
-    };
-    for (int note : {36, 43, 57})
-        midi.addEvent(juce::MidiMessage::noteOn(1, note, static_cast<juce::uint8>(90)), 0);
-    play(0.3);
-    for (int note : {36, 43, 57})
-        midi.addEvent(juce::MidiMessage::noteOff(1, note), 0);
-    midi.addEvent(juce::MidiMessage::noteOn(1, 50, static_cast<juce::uint8>(90)), 0);
-    play(0.5); // the three bows lifted, the D3 attack over
-    for (auto _ : state)
-    {
-        processor.processBlock(buffer, midi);
-        benchmark::DoNotOptimize(buffer.getReadPointer(0)[0]);
     }
-    state.SetItemsProcessed(state.iterations() * kBlock);
+    void time(benchmark::State& state)
+    {
+        for (auto _ : state)
+        {
+            processor.processBlock(buffer, midi);
+            benchmark::DoNotOptimize(buffer.getReadPointer(0)[0]);
+        }
+        state.SetItemsProcessed(state.iterations() * kBlock);
+    }
+};
+
+void benchCelloChord(benchmark::State& state, rosin::engine::ModelQuality quality)
+{
+    Session s(quality);
+    s.midi.addEvent(juce::MidiMessage::controllerEvent(1, 64, 127), 0);
+    // C2 G2 D3 A3: one note per string (the chord rule moves none of them).
+    for (int note : {36, 43, 50, 57})
+        s.midi.addEvent(juce::MidiMessage::noteOn(1, note, static_cast<juce::uint8>(90)), 0);
+    s.play(0.5); // past the attacks
+    s.time(state);
+    state.counters["sounding strings"] = s.processor.activeEngine()->instrument.stringCount();
+}
+
+// A solo line as a cellist plays it: one string bowed (D3), the other three ringing after their notes
+// ended (each was bowed for 0.3 s first, so its contact is warm and its modes are sounding).
+void benchCelloSoloLine(benchmark::State& state, rosin::engine::ModelQuality quality)
+{
+    Session s(quality);
+    for (int note : {36, 43, 57})
+        s.midi.addEvent(juce::MidiMessage::noteOn(1, note, static_cast<juce::uint8>(90)), 0);
+    s.play(0.3);
+    for (int note : {36, 43, 57})
+        s.midi.addEvent(juce::MidiMessage::noteOff(1, note), 0);
+    s.midi.addEvent(juce::MidiMessage::noteOn(1, 50, static_cast<juce::uint8>(90)), 0);
+    s.play(0.5); // the three bows lifted, the D3 attack over
+    s.time(state);
 }
 
 } // namespace
@@ -88,10 +94,17 @@ int main(int argc, char** argv)
                                  { rosin::bench::benchStkBowed(st, kSampleRate, kBlock); })
         ->Unit(benchmark::kMicrosecond);
 #endif
-    benchmark::RegisterBenchmark("RosinProcessor_cello_4_strings/plastic", benchCelloChord)
-        ->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark("RosinProcessor_cello_solo_line/plastic", benchCelloSoloLine)
-        ->Unit(benchmark::kMicrosecond);
+    using rosin::engine::ModelQuality;
+    for (const auto& [name, quality] :
+         {std::pair{"full", ModelQuality::Full}, std::pair{"live", ModelQuality::Live}})
+    {
+        benchmark::RegisterBenchmark(("RosinProcessor_cello_4_strings/plastic/" + std::string(name)).c_str(),
+                                     benchCelloChord, quality)
+            ->Unit(benchmark::kMicrosecond);
+        benchmark::RegisterBenchmark(("RosinProcessor_cello_solo_line/plastic/" + std::string(name)).c_str(),
+                                     benchCelloSoloLine, quality)
+            ->Unit(benchmark::kMicrosecond);
+    }
     const std::string markdown = rosin::bench::takeMarkdownFlag(argc, argv);
     benchmark::Initialize(&argc, argv);
     rosin::bench::IterationTimeReporter reporter;

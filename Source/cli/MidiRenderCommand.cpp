@@ -27,6 +27,7 @@ struct MidiOptions
     engine::OutputChoice output = engine::OutputChoice::RadiatedSound;
     std::string bodyResponse; ///< a measured body response (WAV), empty: the modal body
     bool dcBlocker = true;
+    engine::ModelQuality quality = engine::ModelQuality::Full;
     double sampleRate = 48000.0;
     int blockSize = 512;
     double tail = 2.0;
@@ -67,6 +68,9 @@ const OptionTable& midiOptionTable()
          "a measured body response (WAV, AIFF or FLAC): bridge force (N) to sound\npressure (Pa), heard "
          "instead "
          "of the modal body's radiation"},
+        {"--quality", "full|live",
+         "the plugin's Quality parameter: the full model (default), or live, whose\nstrings and body stop at "
+         "10 kHz (README: Quality)"},
         {"--sample-rate", "HZ", physics::limits::sampleRate.describe() + ", default 48000"},
         {"--block-size", "N",
          "host block size, " + kBlockSize.describe() + ", default 512; the output\ndoes not depend on it"},
@@ -102,6 +106,12 @@ MidiOptions parseMidiOptions(const std::vector<std::string>& args)
                 throw config::ConfigError(opt.name, "", "on or off", "\"" + v + "\"");
             o.dcBlocker = v == "on";
         }
+        else if (opt.name == "--quality")
+        {
+            if (v != "full" && v != "live")
+                throw config::ConfigError(opt.name, "", "full or live", "\"" + v + "\"");
+            o.quality = v == "live" ? engine::ModelQuality::Live : engine::ModelQuality::Full;
+        }
         else if (opt.name == "--sample-rate")
             o.sampleRate = parseNumberIn(opt.name, v, physics::limits::sampleRate);
         else if (opt.name == "--block-size")
@@ -133,7 +143,7 @@ std::string midiRenderHelp()
     return "usage: rosin render --midi FILE.mid [--preset NAME] [--automation FILE.json] [--out FILE.wav]\n"
            "                    [--output radiated|force|velocity] [--dc-blocker on|off] [--body-response "
            "FILE]\n"
-           "                    [--sample-rate HZ] [--block-size N] [--tail SECONDS]\n"
+           "                    [--quality full|live] [--sample-rate HZ] [--block-size N] [--tail SECONDS]\n"
            "\n"
            "Plays a MIDI file through the instrument's engine, as the plugin plays it (the cello or violin "
            "of the\n"
@@ -198,6 +208,7 @@ int runMidiRender(const std::vector<std::string>& args, std::ostream& out, std::
     }
     instrument.parameters().set(engine::ids::output, static_cast<float>(o.output));
     instrument.parameters().set(engine::ids::dcBlocker, o.dcBlocker ? 1.0f : 0.0f);
+    instrument.parameters().set(engine::ids::quality, static_cast<float>(o.quality));
     engine::MidiRenderSettings settings;
     settings.sampleRate = o.sampleRate;
     settings.blockSize = o.blockSize;

@@ -8,11 +8,21 @@ namespace rosin::engine
 
 const std::array<const char*, kParameterCount>& allParameterIds()
 {
-    static const std::array<const char*, kParameterCount> list = {
-        ids::bowForce,   ids::bowSpeed, ids::attackAcceleration, ids::beta,
-        ids::friction,   ids::body,     ids::ambientTemperature, ids::outputLevel,
-        ids::instrument, ids::string,   ids::intonation,         ids::output,
-        ids::dcBlocker,  ids::bypass};
+    static const std::array<const char*, kParameterCount> list = {ids::bowForce,
+                                                                  ids::bowSpeed,
+                                                                  ids::attackAcceleration,
+                                                                  ids::beta,
+                                                                  ids::friction,
+                                                                  ids::body,
+                                                                  ids::ambientTemperature,
+                                                                  ids::outputLevel,
+                                                                  ids::instrument,
+                                                                  ids::string,
+                                                                  ids::intonation,
+                                                                  ids::output,
+                                                                  ids::dcBlocker,
+                                                                  ids::bypass,
+                                                                  ids::quality};
     return list;
 }
 
@@ -103,6 +113,8 @@ std::vector<ParameterSpec> buildSpecs()
     // The plugin's own bypass (getBypassParameter): hosts show it as theirs, and JUCE's VST3 wrapper then
     // never parses the private trailer of a saved state (a damaged trailer crashed it, issue 19).
     s.push_back(onOff(ids::bypass, "Bypass", false));
+    // Appended, not inserted: the table's order is the automation files' and the saved states' order.
+    s.push_back(choice(ids::quality, "Quality", {"full", "live"}, static_cast<int>(ModelQuality::Full)));
     return s;
 }
 
@@ -183,6 +195,7 @@ InstrumentKey instrumentKeyOf(const RawParameterValues& raw) noexcept
                    0, physics::kFrictionModelCount - 1));
     key.body = raw[P::body] >= 0.5f;
     key.ambientCelsius = finiteOr(raw[P::ambientTemperature], defaults::ambientCelsius);
+    key.quality = raw[P::quality] >= 0.5f ? ModelQuality::Live : ModelQuality::Full;
     return key;
 }
 

@@ -33,6 +33,7 @@ inline constexpr const char* intonation = "intonation";                 ///< boo
 inline constexpr const char* output = "output";                         ///< choice: OutputStage.h
 inline constexpr const char* dcBlocker = "dcBlocker";                   ///< bool: on force and velocity
 inline constexpr const char* bypass = "bypass";                         ///< bool: the host's bypass (silence)
+inline constexpr const char* quality = "quality";                       ///< choice: full, live (ModelQuality)
 inline constexpr int version = 1;
 } // namespace ids
 
@@ -52,9 +53,10 @@ enum class ParameterIndex : int
     intonation,
     output,
     dcBlocker,
-    bypass
+    bypass,
+    quality
 };
-inline constexpr int kParameterCount = static_cast<int>(ParameterIndex::bypass) + 1;
+inline constexpr int kParameterCount = static_cast<int>(ParameterIndex::quality) + 1;
 /// Every parameter ID, in the table's order.
 const std::array<const char*, kParameterCount>& allParameterIds();
 /// Index of `id` in allParameterIds(), or -1.
@@ -100,6 +102,15 @@ std::vector<std::unique_ptr<juce::RangedAudioParameter>> makeParameters();
 /// it was set.
 bool setPlainValue(juce::RangedAudioParameter& parameter, float plain, bool onlyIfChanged = false);
 
+/// How much of the model runs: the full model, or the live quality, whose strings and body stop at
+/// kLiveBandwidthHz (the README's "Quality" gives its cost and what it changes in the sound).
+enum class ModelQuality : int
+{
+    Full,
+    Live
+};
+inline constexpr double kLiveBandwidthHz = 10000.0;
+
 /// What the instrument is built from: changing any of these rebuilds it off the audio thread.
 struct InstrumentKey
 {
@@ -107,6 +118,7 @@ struct InstrumentKey
     physics::FrictionModel friction = physics::FrictionModel::Plastic;
     bool body = true;
     double ambientCelsius = 20.0;
+    ModelQuality quality = ModelQuality::Full;
     bool operator==(const InstrumentKey&) const = default;
 };
 

@@ -39,6 +39,7 @@ physics::InstrumentConfig buildInstrumentConfig(const InstrumentKey& key, const 
     if (!key.body)
         config.body = physics::rigidBody();
     config.contact.ambientOffset = key.ambientCelsius - kCalibrationAmbientCelsius;
+    config.modeBandwidthHz = key.quality == ModelQuality::Live ? kLiveBandwidthHz : 0.0;
     return config;
 }
 

@@ -20,6 +20,7 @@ ParameterControls::ParameterControls(juce::AudioProcessorValueTreeState& state) 
     earAttachment_ =
         std::make_unique<juce::AudioProcessorValueTreeState::ButtonAttachment>(state_, ids::intonation, ear_);
     addSelector(ids::output, "Output");
+    addSelector(ids::quality, "Quality");
     addAndMakeVisible(dcBlocker_);
     dcBlocker_.setTooltip(
         "A 10 Hz high-pass on the bridge force and velocity outputs (the radiated sound has no "
@@ -81,9 +82,9 @@ void ParameterControls::resized()
     auto area = getLocalBounds();
     auto row = area.removeFromTop(kSelectorRowHeight);
     // Selector widths: label (attached on the left) + box. The first three share the top row with the body
-    // and ear switches; the output choice and its DC blocker take the second.
-    const int labelWidths[] = {80, 56, 90, 80};
-    const int boxWidths[] = {100, 80, 140, 140};
+    // and ear switches; the output choice, its DC blocker and the quality take the second.
+    const int labelWidths[] = {80, 56, 90, 60, 56};
+    const int boxWidths[] = {100, 80, 140, 130, 70};
     for (std::size_t i = 0; i < selectors_.size(); ++i)
     {
         if (i == 3)
@@ -92,11 +93,12 @@ void ParameterControls::resized()
             ear_.setBounds(row.removeFromLeft(150));
             row = area.removeFromTop(kSelectorRowHeight);
         }
+        if (i == 4)
+            dcBlocker_.setBounds(row.removeFromLeft(100));
         row.removeFromLeft(labelWidths[i]);
         selectors_[i]->box.setBounds(row.removeFromLeft(boxWidths[i]).reduced(0, 2));
         row.removeFromLeft(12);
     }
-    dcBlocker_.setBounds(row.removeFromLeft(110));
 
     area.removeFromTop(8);
     const int n = static_cast<int>(knobs_.size());

@@ -1,6 +1,7 @@
 #pragma once
 // The host parameters as controls: the model selectors (instrument, string, friction law, body, intonation)
-// on one row and the gesture knobs in physical units below, each attached to its APVTS parameter.
+// on one row, the output, its DC blocker and the quality on a second, and the gesture knobs in physical
+// units below, each attached to its APVTS parameter.
 #include <memory>
 #include <vector>
 
@@ -19,6 +20,8 @@ class ParameterControls : public juce::Component
     void resized() override;
 
     static constexpr int kSelectorRowHeight = 28;
+    /// Where the second row's own controls end: the editor puts the body response's buttons after it.
+    static constexpr int kSecondRowWidth = 440;
 
   private:
     struct Knob

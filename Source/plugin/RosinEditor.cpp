@@ -75,11 +75,12 @@ void RosinEditor::resized()
     auto area = getLocalBounds().reduced(10, 0);
     area.removeFromTop(kHeaderHeight);
     controls_.setBounds(area.removeFromTop(kControlsHeight));
-    // Beside the output choice (the controls' second row): the body response's buttons and status.
+    // Beside the output choice and the quality (the controls' second row): the body response's buttons and
+    // status.
     auto responseRow = controls_.getBounds()
                            .withTrimmedTop(ParameterControls::kSelectorRowHeight)
                            .withHeight(ParameterControls::kSelectorRowHeight)
-                           .withTrimmedLeft(410);
+                           .withTrimmedLeft(ParameterControls::kSecondRowWidth + 10);
     loadResponse_.setBounds(responseRow.removeFromLeft(120).reduced(0, 3));
     clearResponse_.setBounds(responseRow.removeFromLeft(90).reduced(4, 3));
     responseStatus_.setBounds(responseRow);

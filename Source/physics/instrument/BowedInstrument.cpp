@@ -1,5 +1,6 @@
 #include "BowedInstrument.h"
 
+#include <algorithm>
 #include <numbers>
 
 namespace rosin::physics
@@ -33,7 +34,10 @@ void BowedInstrument::prepare(const InstrumentConfig& config, double sampleRate)
     config_ = config;
     voices_.clear();
     VoiceConfig reference;
-    const double modeLimit = 2.0 * std::numbers::pi * reference.maxModeFrequencyRatio * sampleRate;
+    const double bandRatio = config.modeBandwidthHz > 0.0 ? std::min(reference.maxModeFrequencyRatio,
+                                                                     config.modeBandwidthHz / sampleRate)
+                                                          : reference.maxModeFrequencyRatio;
+    const double modeLimit = 2.0 * std::numbers::pi * bandRatio * sampleRate;
     body_.configure(config.body, sampleRate, modeLimit);
     listeningBody_.configure(config.body.rigid() ? config.soundBody : BodyParameters{}, sampleRate,
                              modeLimit);
@@ -43,6 +47,7 @@ void BowedInstrument::prepare(const InstrumentConfig& config, double sampleRate)
         vc.string = s; // vc.body stays rigid: the strings share body_
         vc.torsion = config.torsion;
         vc.bendingStiffness = config.bendingStiffness;
+        vc.maxModeFrequencyRatio = bandRatio;
         auto voice = std::make_unique<BowedStringVoice>();
         voice->prepare(vc, makeFrictionLaw(config.friction, config.contact), sampleRate);
         voice->useSharedBody(&body_);

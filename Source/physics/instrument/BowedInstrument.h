@@ -35,6 +35,9 @@ struct InstrumentConfig
     bool bendingStiffness = true;
     FrictionModel friction = FrictionModel::Plastic;
     ContactParameters contact = galluzzoContact();
+    /// Modes of the strings and the body above this frequency are left out, Hz; 0 (the default, the full
+    /// model) keeps everything below VoiceConfig's 0.45 fs. A lower band costs less (the live quality).
+    double modeBandwidthHz = 0.0;
 };
 
 /// A cello: C2 G2 D3 A3 (StringParameters catalogue) on celloBody().
