@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -13,14 +14,6 @@
 
 namespace rosin::physics
 {
-
-namespace
-{
-double sanitiseNonNegative(double x) noexcept
-{
-    return std::isfinite(x) ? std::abs(x) : 0.0;
-}
-} // namespace
 
 PlasticLanes::PlasticLanes(std::unique_ptr<PlasticThermalLaw> law) : law_(std::move(law))
 {
@@ -49,9 +42,9 @@ void PlasticLanes::SideLanes::resetLane(int l) noexcept
 
 namespace
 {
-// The lanes stay at x86-64-v3 at most, as their modal kernels do (LaneModes.cpp).
-const SimdLevel kLevel = simdLevel() == SimdLevel::V4 ? SimdLevel::V3 : simdLevel();
-
+// Eight lanes of doubles fill one AVX-512 register: unlike the modal lanes (eight floats, LaneModes.cpp),
+// these kernels take the best level. Lane-wise arithmetic, so every level gives a lane the same result where
+// both fuse multiply-adds (x86-64-v3 and v4: a 60 x 60 Guettler scan is byte-identical on the two).
 // ConductingSide::advance for every lane: history holds `terms` rows of kLanes values, each row taken as
 // vectors of the kernel's width.
 template <int bytes>
@@ -89,7 +82,8 @@ ROSIN_KERNEL_VARIANTS_BY_WIDTH(void, advanceSide,
 void advanceSide(double* history, const double* decay, const double* weight, int terms,
                  const double* scaledFlux, const double* washout, double* sum) noexcept
 {
-    ROSIN_KERNEL_DISPATCH(kLevel, advanceSide, (history, decay, weight, terms, scaledFlux, washout, sum));
+    ROSIN_KERNEL_DISPATCH(simdLevel(), advanceSide,
+                          (history, decay, weight, terms, scaledFlux, washout, sum));
 }
 } // namespace
 
@@ -126,7 +120,6 @@ void PlasticLanes::updateForces(const Lanes& bowForce) noexcept
         if (bowForce[l] == force_[l])
             continue;
         force_[l] = bowForce[l];
-        termsValid_ = false; // movingTerms() depend on the force
         const HeatBalance::ForceTerms t = law_->heat().forceTermsAt(bowForce[l]);
         capacityRate_[l] = t.capacityRate;
         advectionPerSpeed_[l] = t.advectionPerSpeed;
@@ -139,91 +132,157 @@ void PlasticLanes::updateForces(const Lanes& bowForce) noexcept
     }
 }
 
-void PlasticLanes::movingTerms(const Lanes& speed, Lanes& invMoving, Lanes& decay) const noexcept
+namespace
 {
-    if (!(termsValid_ && speed == termsSpeed_))
-    {
-        for (int l = 0; l < kLanes; ++l)
-        {
-            const double x = sanitiseNonNegative(speed[l]) * washoutPerSpeed_[l];
-            termsInvMoving_[l] = invMovingG0_[l] / washout::firstStepFactor(x);
-            termsWashout_[l] = washout::decay(x);
-        }
-        termsSpeed_ = speed;
-        termsValid_ = true;
-    }
-    invMoving = termsInvMoving_;
-    decay = termsWashout_;
+// The per-sample arithmetic of every lane in vectors of the kernel's width (VectorBlock.h: w = 8 doubles on
+// AVX-512, 4 on AVX2, 2 on SSE; the lanes go w at a time), each line the scalar law's (HeatBalance,
+// ThermalContact, PlasticThermalLaw) applied lane-wise in the same order. Lanes the vector formulas do not
+// cover (a washout step x >= 0.25, a temperature off the calibration's uniform grid) take the scalar
+// functions.
+struct StepData
+{
+    // Per lane, this sample.
+    const double *dvh, *capacityRate, *advectionPerSpeed, *kernelScale, *invStationaryG0, *invMovingG0,
+        *washoutPerSpeed, *area;
+    const double *stationarySum, *movingSum, *temperature, *previousPower, *previousSpeed;
+    double loadSlope, ambientOffset;
+    ThermalCalibration::UniformGrid grid;
+    const ThermalCalibration* table;
+    // Results: the solution, the commit's fluxes, the moving side's washout and temperature.
+    double *dv, *frictionForce, *sticking, *power, *speed, *toStationary, *toMoving, *washout, *committed;
+};
+
+template <typename V> ROSIN_KERNEL_BODY V absolute(V x) noexcept
+{
+    return x < 0.0 ? -x : x;
+}
+/// sanitiseNonNegative, lane-wise: |x|, or 0 where x is not finite.
+template <typename V> ROSIN_KERNEL_BODY V nonNegative(V x) noexcept
+{
+    const V a = absolute(x);
+    return a <= std::numeric_limits<double>::max() ? a : V{};
+}
+/// True if any lane of a comparison's result is set.
+template <typename M> ROSIN_KERNEL_BODY bool any(M mask) noexcept
+{
+    constexpr int w = sizeof(M) / sizeof(mask[0]);
+    long long bits[w];
+    std::memcpy(bits, &mask, sizeof bits);
+    long long all = 0;
+    for (int l = 0; l < w; ++l)
+        all |= bits[l];
+    return all != 0;
 }
 
-// HeatBalance::solveTemperature with local(), lane by lane.
-void PlasticLanes::predict(const Lanes& power, const Lanes& speed, Lanes& T) const noexcept
+/// washout::firstStepFactor and washout::decay of x = |dv| dt / ell (series below 0.25, as they are).
+template <typename V> ROSIN_KERNEL_BODY void washoutTerms(V x, V& firstStep, V& decay) noexcept
 {
-    Lanes invMoving, decay;
-    movingTerms(speed, invMoving, decay);
-    for (int l = 0; l < kLanes; ++l)
-    {
-        const double advection = advectionPerSpeed_[l] * sanitiseNonNegative(speed[l]);
-        T[l] = (sanitiseNonNegative(power[l]) + capacityRate_[l] * temperature_[l] +
-                stationary_.sum[l] * invStationaryG0_[l] + moving_.sum[l] * invMoving[l]) /
-               (capacityRate_[l] + advection + invStationaryG0_[l] + invMoving[l]);
-    }
+    firstStep = 1.0 - x * (1.0 / 3.0 - x * (1.0 / 10.0 - x * (1.0 / 42.0 - x * (1.0 / 216.0 - x / 1320.0))));
+    decay = 1.0 - x * (1.0 - x * (0.5 - x * (1.0 / 6.0 - x * (1.0 / 24.0 - x * (1.0 / 120.0 - x / 720.0)))));
+    if (any(!(x < 0.25)))
+        for (int l = 0; l < static_cast<int>(sizeof(V) / sizeof(double)); ++l)
+            if (!(x[l] < 0.25))
+                firstStep[l] = washout::firstStepFactor(x[l]), decay[l] = washout::decay(x[l]);
+}
+template <typename V> ROSIN_KERNEL_BODY V depositFactor(V x) noexcept
+{
+    V d = 1.0 - x * (0.5 - x * (1.0 / 6.0 - x * (1.0 / 24.0 - x * (1.0 / 120.0 - x / 720.0))));
+    if (any(!(x < 0.25)))
+        for (int l = 0; l < static_cast<int>(sizeof(V) / sizeof(double)); ++l)
+            if (!(x[l] < 0.25))
+                d[l] = washout::depositFactor(x[l]);
+    return d;
 }
 
-void PlasticLanes::limits(const Lanes& T, Lanes& limit) const noexcept
+/// HeatBalance::predict with local(): the temperature each lane reaches with power P at sliding speed v.
+template <typename V>
+ROSIN_KERNEL_BODY V predictTemperature(const StepData& d, int j, V power, V speed, V& invMoving,
+                                       V& decay) noexcept
 {
-    for (int l = 0; l < kLanes; ++l)
-        limit[l] = law_->yieldStress(T[l]) * area_[l]; // the shared table: one lookup per lane
+    const V v = nonNegative(speed);
+    V firstStep;
+    washoutTerms(v * loadBlock<V>(d.washoutPerSpeed + j), firstStep, decay);
+    invMoving = loadBlock<V>(d.invMovingG0 + j) / firstStep;
+    const V C = loadBlock<V>(d.capacityRate + j), invS = loadBlock<V>(d.invStationaryG0 + j);
+    const V advection = loadBlock<V>(d.advectionPerSpeed + j) * v;
+    return (nonNegative(power) + C * loadBlock<V>(d.temperature + j) +
+            loadBlock<V>(d.stationarySum + j) * invS + loadBlock<V>(d.movingSum + j) * invMoving) /
+           (C + advection + invS + invMoving);
 }
 
-void PlasticLanes::solveCharacteristic(const Lanes& dvh, double twoZ, const Lanes& limit,
-                                       LaneJunctionSolution& out) const noexcept
+/// PlasticThermalLaw::frictionLimit: tau_y(T + ambient offset) from the uniform grid, times the area.
+template <typename V> ROSIN_KERNEL_BODY V frictionLimit(const StepData& d, int j, V T) noexcept
 {
-    for (int l = 0; l < kLanes; ++l)
-        out[l] = PlasticThermalLaw::solveCharacteristic(dvh[l], twoZ, limit[l]);
+    constexpr int w = sizeof(V) / sizeof(double);
+    using I = VectorBlock<long long, w>;
+    const V Toff = T + d.ambientOffset;
+    const V x = Toff / d.grid.step;
+    // Lanes off the grid (below its first cell, above its top, NaN) read cell 1 and are replaced below.
+    const auto onGrid = Toff > 0.0 && x >= 1.0 && x < static_cast<double>(d.grid.size - 1);
+    const V inside = onGrid ? x : V{} + 1.0;
+    const I i = __builtin_convertvector(inside, I);
+    const V frac = inside - __builtin_convertvector(i, V);
+    V lower, upper;
+    for (int l = 0; l < w; ++l)
+        lower[l] = d.grid.values[i[l]], upper[l] = d.grid.values[i[l] + 1];
+    V tau = lower + frac * (upper - lower);
+    if (d.grid.isLog || any(!onGrid))
+        for (int l = 0; l < w; ++l)
+            tau[l] = !onGrid[l] ? d.table->lookup(Toff[l]) : d.grid.isLog ? std::exp(tau[l]) : tau[l];
+    return tau * loadBlock<V>(d.area + j);
 }
 
-// ThermalContact::commit and HeatBalance::commit for every lane.
-void PlasticLanes::commit(const LaneJunctionSolution& s) noexcept
+/// PlasticThermalLaw::solveCharacteristic, lane-wise.
+template <typename V>
+ROSIN_KERNEL_BODY void solveCharacteristic(const StepData& d, V dvh, V limit, V& dv, V& f, V& stuck) noexcept
 {
-    Lanes power, speed, T;
-    for (int l = 0; l < kLanes; ++l)
-    {
-        power[l] = std::abs(s[l].frictionForce * s[l].dv);
-        speed[l] = std::abs(s[l].dv);
-    }
-    previousPower_ = power;
-    previousSpeed_ = speed;
-    predict(power, speed, T);
-    Lanes invMoving, decay, toStationary, toMoving;
-    movingTerms(speed, invMoving, decay);
-    for (int l = 0; l < kLanes; ++l)
-    {
-        const double qs = (T[l] - stationary_.sum[l]) * invStationaryG0_[l];
-        const double qm = (T[l] - moving_.sum[l]) * invMoving[l];
-        if (!std::isfinite(T[l]) || !std::isfinite(qs) || !std::isfinite(qm))
-        {
-            // HeatBalance::reset(): this lane's heat model back to ambient (its previous power stays).
-            stationary_.resetLane(l);
-            moving_.resetLane(l);
-            T[l] = toStationary[l] = toMoving[l] = 0.0;
-            continue;
-        }
-        toStationary[l] = kernelScale_[l] * qs;
-        toMoving[l] = kernelScale_[l] * qm *
-                      washout::depositFactor(sanitiseNonNegative(speed[l]) * washoutPerSpeed_[l]);
-    }
-    static constexpr Lanes kNoWashout = []
-    {
-        Lanes one{};
-        for (double& x : one)
-            x = 1.0;
-        return one;
-    }();
-    stationary_.advance(toStationary, kNoWashout);
-    moving_.advance(toMoving, decay);
-    temperature_ = T;
+    const V pull = d.loadSlope * dvh;
+    const auto holds = absolute(pull) <= limit;
+    const V side = dvh > 0.0 ? V{} + 1.0 : V{} - 1.0;
+    dv = holds ? V{} : dvh - side * limit / d.loadSlope;
+    f = holds ? -pull : -side * limit;
+    stuck = holds ? V{} + 1.0 : V{};
 }
+
+// PlasticThermalLaw::step for lanes j .. j + w - 1, up to the heat balance's side advances: predictor, exact
+// solve, corrector, exact solve, and the commit's temperature and fluxes.
+template <typename V> ROSIN_KERNEL_BODY void stepLanes(const StepData& d, int j) noexcept
+{
+    const V dvh = loadBlock<V>(d.dvh + j);
+    V invMoving, decay, dv, f, stuck;
+    V T = predictTemperature(d, j, loadBlock<V>(d.previousPower + j), loadBlock<V>(d.previousSpeed + j),
+                             invMoving, decay);
+    solveCharacteristic(d, dvh, frictionLimit(d, j, T), dv, f, stuck);
+    T = predictTemperature(d, j, absolute(f * dv), absolute(dv), invMoving, decay);
+    solveCharacteristic(d, dvh, frictionLimit(d, j, T), dv, f, stuck);
+    const V power = absolute(f * dv), speed = absolute(dv);
+    T = predictTemperature(d, j, power, speed, invMoving, decay);
+    const V qs = (T - loadBlock<V>(d.stationarySum + j)) * loadBlock<V>(d.invStationaryG0 + j);
+    const V qm = (T - loadBlock<V>(d.movingSum + j)) * invMoving;
+    const V ks = loadBlock<V>(d.kernelScale + j);
+    storeBlock(d.toStationary + j, ks * qs);
+    storeBlock(d.toMoving + j,
+               ks * qm * depositFactor(nonNegative(speed) * loadBlock<V>(d.washoutPerSpeed + j)));
+    storeBlock(d.washout + j, decay);
+    storeBlock(d.committed + j, T);
+    storeBlock(d.dv + j, dv);
+    storeBlock(d.frictionForce + j, f);
+    storeBlock(d.sticking + j, stuck);
+    storeBlock(d.power + j, power);
+    storeBlock(d.speed + j, speed);
+}
+
+template <int bytes> ROSIN_KERNEL_BODY void stepBody(const StepData& d) noexcept
+{
+    constexpr int w = bytes / static_cast<int>(sizeof(double));
+    static_assert(kLanes % w == 0, "the lanes fill whole vectors");
+#pragma GCC unroll 4
+    for (int j = 0; j < kLanes; j += w)
+        stepLanes<VectorBlock<double, w>>(d, j);
+}
+
+ROSIN_KERNEL_VARIANTS_BY_WIDTH(void, step, (const StepData& d), (d))
+} // namespace
 
 void PlasticLanes::solve(const LaneJunctionInput& in, LaneJunctionSolution& out) noexcept
 {
@@ -234,20 +293,57 @@ void PlasticLanes::solve(const LaneJunctionInput& in, LaneJunctionSolution& out)
         Fb[l] = std::isfinite(in.bowForce[l]) ? std::max(in.bowForce[l], 0.0) : 0.0;
     }
     updateForces(Fb);
-    // Predictor with last sample's power, corrector with this sample's (PlasticThermalLaw::solve).
-    Lanes T, limit, power, speed;
-    predict(previousPower_, previousSpeed_, T);
-    limits(T, limit);
-    solveCharacteristic(dvh, in.loadSlope, limit, out);
+    Lanes dv, f, stuck, power, speed, toStationary, toMoving, washout, T;
+    const StepData d{dvh.data(),
+                     capacityRate_.data(),
+                     advectionPerSpeed_.data(),
+                     kernelScale_.data(),
+                     invStationaryG0_.data(),
+                     invMovingG0_.data(),
+                     washoutPerSpeed_.data(),
+                     area_.data(),
+                     stationary_.sum.data(),
+                     moving_.sum.data(),
+                     temperature_.data(),
+                     previousPower_.data(),
+                     previousSpeed_.data(),
+                     in.loadSlope,
+                     law_->contact().ambientOffset,
+                     law_->calibration().uniformGrid(),
+                     &law_->calibration(),
+                     dv.data(),
+                     f.data(),
+                     stuck.data(),
+                     power.data(),
+                     speed.data(),
+                     toStationary.data(),
+                     toMoving.data(),
+                     washout.data(),
+                     T.data()};
+    [&] { ROSIN_KERNEL_DISPATCH(simdLevel(), step, (d)); }();
+    previousPower_ = power;
+    previousSpeed_ = speed;
     for (int l = 0; l < kLanes; ++l)
     {
-        power[l] = std::abs(out[l].frictionForce * out[l].dv);
-        speed[l] = std::abs(out[l].dv);
+        out[l] = {dv[l], f[l], stuck[l] != 0.0};
+        if (!std::isfinite(T[l]) || !std::isfinite(toStationary[l]) || !std::isfinite(toMoving[l]))
+        {
+            // HeatBalance::reset(): this lane's heat model back to ambient (its previous power stays).
+            stationary_.resetLane(l);
+            moving_.resetLane(l);
+            T[l] = toStationary[l] = toMoving[l] = 0.0;
+        }
     }
-    predict(power, speed, T);
-    limits(T, limit);
-    solveCharacteristic(dvh, in.loadSlope, limit, out);
-    commit(out);
+    static constexpr Lanes kNoWashout = []
+    {
+        Lanes one{};
+        for (double& x : one)
+            x = 1.0;
+        return one;
+    }();
+    stationary_.advance(toStationary, kNoWashout);
+    moving_.advance(toMoving, washout);
+    temperature_ = T;
 }
 
 } // namespace rosin::physics

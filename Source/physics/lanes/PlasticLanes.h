@@ -1,11 +1,11 @@
 #pragma once
 // The plastic thermal law (PlasticThermalLaw.h) for all eight lanes at once: the same predictor, exact
 // stick/slide solve, corrector and implicit heat-balance commit, with each lane's temperature,
-// stationary-side history and previous power held side by side so that each step is one loop over the lanes.
-// The calibration table, the heat model's sum-of-exponentials and the contact geometry are shared (read from
-// one prepared PlasticThermalLaw), so eight lanes keep one copy in cache instead of eight. A lane agrees with
-// its own PlasticThermalLaw to rounding (the history sum is added in another order;
-// tests/physics/VoiceLanesTest.cpp).
+// stationary-side history and previous power held side by side, each step computed in vectors across the
+// lanes (one kernel per vector unit, KernelDispatch.h). The calibration table, the heat model's
+// sum-of-exponentials and the contact geometry are shared (read from one prepared PlasticThermalLaw), so
+// eight lanes keep one copy in cache instead of eight. A lane agrees with its own PlasticThermalLaw to
+// rounding (the history sum is added in another order; tests/physics/VoiceLanesTest.cpp).
 #include <memory>
 #include <vector>
 
@@ -31,13 +31,6 @@ class PlasticLanes final : public LaneFriction
     using Lanes = std::array<double, kLanes>;
     /// The force-dependent terms of each lane, recomputed when its bow force changes.
     void updateForces(const Lanes& bowForce) noexcept;
-    /// Temperature each lane would reach with power P and sliding speed v (HeatBalance::predict).
-    void predict(const Lanes& power, const Lanes& speed, Lanes& temperature) const noexcept;
-    void limits(const Lanes& temperature, Lanes& limit) const noexcept;
-    void commit(const LaneJunctionSolution& s) noexcept;
-    void solveCharacteristic(const Lanes& dvh, double twoZ, const Lanes& limit,
-                             LaneJunctionSolution& out) const noexcept;
-
     /// One solid's SOE history for every lane (ConductingSide, lane by lane).
     struct SideLanes
     {
@@ -48,19 +41,12 @@ class PlasticLanes final : public LaneFriction
         void resetLane(int lane) noexcept;
         void advance(const Lanes& scaledFlux, const Lanes& washout) noexcept;
     };
-    /// 1 / g0 of the moving side and its washout at each lane's sliding speed.
-    void movingTerms(const Lanes& speed, Lanes& invMoving, Lanes& washout) const noexcept;
-
     std::unique_ptr<PlasticThermalLaw> law_;
     SideLanes stationary_, moving_;
     Lanes temperature_{}, previousPower_{}, previousSpeed_{};
     Lanes force_{}, area_{};
     Lanes capacityRate_{}, advectionPerSpeed_{}, kernelScale_{}, invStationaryG0_{}, invMovingG0_{},
         washoutPerSpeed_{};
-    // movingTerms() of the last speeds asked, at the current forces: a sample asks four times, the first time
-    // for the speeds the last commit used and the last two times for one set of speeds. A cache.
-    mutable Lanes termsSpeed_{}, termsInvMoving_{}, termsWashout_{};
-    mutable bool termsValid_ = false;
 };
 
 } // namespace rosin::physics

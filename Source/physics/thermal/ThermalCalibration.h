@@ -65,6 +65,21 @@ class ThermalCalibration
     const std::vector<double>& values() const noexcept { return values_; }
     CalibrationQuantity quantity() const noexcept { return quantity_; }
 
+    /// The uniform grid lookup() reads between its first cell and its top, for engines that read it for many
+    /// contacts at once (PlasticLanes): lookup(T) = v[i] + f (v[i+1] - v[i]) with x = T / step, i = floor(x),
+    /// f = x - i, for 1 <= x < size - 1 (exp of that when isLog).
+    struct UniformGrid
+    {
+        const double* values = nullptr;
+        int size = 0;
+        double step = 1.0;
+        bool isLog = false;
+    };
+    UniformGrid uniformGrid() const noexcept
+    {
+        return {uniform_.data(), static_cast<int>(uniform_.size()), uniformStep_, uniformIsLog_};
+    }
+
   private:
     CalibrationQuantity quantity_ = CalibrationQuantity::YieldStress;
     std::vector<double> speeds_, temperatures_, values_, logT_, logValue_;
