@@ -67,6 +67,16 @@ JunctionSolution ModifiedThermalLaw::step(const JunctionInput& in, double creepR
     if (!thermal_.prepared())
         return {safe.dvHistory, 0.0, false};
     const double Fb = safe.bowForce;
+    if (Fb == 0.0)
+    {
+        // Bow lifted: the junction holds at most mu Fb = 0 at any temperature, so both passes below would
+        // solve the same junction; one pass (advancing the hysteresis memory once, as the corrector does) and
+        // the heat balance's step.
+        const JunctionSolution s = creepingSolution(
+            solveCurveJunction(curveAt(thermal_.temperature(), Fb), safe, memory_), safe, creepResistance);
+        thermal_.commit(s, Fb);
+        return s;
+    }
     // A held contact creeps where a creep resistance is given (creepingSolution; 0: none), so the
     // corrector sees the creep's power and the commit takes it.
     CurveJunctionMemory trial = memory_; // the predictor must not advance the hysteresis state

@@ -206,6 +206,11 @@ TEST(ThermalLaws, ALiftedBowExertsNoForceAndItsContactOnlyCools)
     expectLiftedBowOnlyCools(plastic);
     ViscousThermalLaw viscous(galluzzoContact());
     expectLiftedBowOnlyCools(viscous);
+    for (const auto variant : {ModifiedThermalLaw::Variant::Bow, ModifiedThermalLaw::Variant::Rod})
+    {
+        ModifiedThermalLaw modified(galluzzoContact(), variant);
+        expectLiftedBowOnlyCools(modified);
+    }
 }
 
 TEST(FrictionLawFactory, NamesRoundTripAndErrorsListValidNames)
