@@ -321,12 +321,17 @@ void PlasticLanes::solve(const LaneJunctionInput& in, LaneJunctionSolution& out)
                      washout.data(),
                      T.data()};
     [&] { ROSIN_KERNEL_DISPATCH(simdLevel(), step, (d)); }();
-    previousPower_ = power;
-    previousSpeed_ = speed;
     for (int l = 0; l < kLanes; ++l)
     {
         out[l] = {dv[l], f[l], stuck[l] != 0.0};
-        if (!std::isfinite(T[l]) || !std::isfinite(toStationary[l]) || !std::isfinite(toMoving[l]))
+        if (Fb[l] == 0.0)
+        {
+            // Bow lifted: the open contact makes and passes no heat, each side decays alone
+            // (HeatBalance::open); its temperature is set from the stationary side below.
+            power[l] = speed[l] = toStationary[l] = toMoving[l] = 0.0;
+            washout[l] = 1.0;
+        }
+        else if (!std::isfinite(T[l]) || !std::isfinite(toStationary[l]) || !std::isfinite(toMoving[l]))
         {
             // HeatBalance::reset(): this lane's heat model back to ambient (its previous power stays).
             stationary_.resetLane(l);
@@ -343,7 +348,10 @@ void PlasticLanes::solve(const LaneJunctionInput& in, LaneJunctionSolution& out)
     }();
     stationary_.advance(toStationary, kNoWashout);
     moving_.advance(toMoving, washout);
-    temperature_ = T;
+    for (int l = 0; l < kLanes; ++l)
+        temperature_[l] = Fb[l] == 0.0 ? stationary_.sum[l] : T[l];
+    previousPower_ = power;
+    previousSpeed_ = speed;
 }
 
 } // namespace rosin::physics

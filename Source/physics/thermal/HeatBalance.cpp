@@ -122,6 +122,16 @@ void HeatBalance::commit(double powerW, double slidingSpeed, double bowForce) no
     movingFlux_ = toMoving;
 }
 
+void HeatBalance::open() noexcept
+{
+    if (atRest_)
+        return; // nothing stored, nothing to decay
+    stationary_.advance(0.0, 1.0);
+    moving_.advance(0.0, 1.0);
+    temperature_ = stationary_.historySum();
+    stationaryFlux_ = movingFlux_ = 0.0;
+}
+
 double HeatBalance::steadyConductance(double slidingSpeed, double bowForce) const noexcept
 {
     const Local& l = local(slidingSpeed, bowForce);

@@ -42,6 +42,11 @@ class HeatBalance
     /// Advances one time step with these inputs (eq. 2.9). O(M), allocation-free. A non-finite result
     /// resets the state to ambient.
     void commit(double powerW, double slidingSpeed, double bowForce) noexcept;
+    /// Advances one time step with the bow lifted (no bow force): the contact is open, so no heat is made and
+    /// none passes between the solids; each solid's memory decays by conduction alone (nothing slides past
+    /// it), and temperature() is the stationary solid's surface temperature where the contact was, which the
+    /// next contact starts from. O(M), allocation-free.
+    void open() noexcept;
     /// Committed contact temperature rise above ambient, K.
     double temperature() const noexcept { return temperature_; }
     /// Heat flow into the stationary and into the moving solid during the last committed step, W.

@@ -70,11 +70,11 @@ JunctionSolution ModifiedThermalLaw::step(const JunctionInput& in, double creepR
     if (Fb == 0.0)
     {
         // Bow lifted: the junction holds at most mu Fb = 0 at any temperature, so both passes below would
-        // solve the same junction; one pass (advancing the hysteresis memory once, as the corrector does) and
-        // the heat balance's step.
+        // solve the same junction: one pass (advancing the hysteresis memory once, as the corrector does),
+        // and the open contact moves no heat (HeatBalance::open).
         const JunctionSolution s = creepingSolution(
             solveCurveJunction(curveAt(thermal_.temperature(), Fb), safe, memory_), safe, creepResistance);
-        thermal_.commit(s, Fb);
+        thermal_.open();
         return s;
     }
     // A held contact creeps where a creep resistance is given (creepingSolution; 0: none), so the

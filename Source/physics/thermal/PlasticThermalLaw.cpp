@@ -63,11 +63,11 @@ JunctionSolution PlasticThermalLaw::step(const JunctionInput& in, double creepRe
         return {dvh, 0.0, false};
     if (Fb == 0.0)
     {
-        // Bow lifted: the contact area pi a(0)^2 is zero, so the limit is zero at any temperature and the
-        // predictor and corrector would both give this; only the heat balance moves on.
+        // Bow lifted: the contact area pi a(0)^2 is zero, so the limit is zero at any temperature, and the
+        // open contact moves no heat (HeatBalance::open).
         const JunctionSolution s =
             creepingSolution(solveCharacteristic(dvh, twoZ, 0.0), safe, creepResistance);
-        thermal_.commit(s, Fb);
+        thermal_.open();
         return s;
     }
     // A held contact creeps where a creep resistance is given (creepingSolution; 0: none), so the

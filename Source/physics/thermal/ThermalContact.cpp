@@ -39,6 +39,13 @@ void ThermalContact::commit(const JunctionSolution& solution, double bowForce) n
     heat_.commit(previousPower_, previousSpeed_, bowForce);
 }
 
+void ThermalContact::open() noexcept
+{
+    previousPower_ = 0.0;
+    previousSpeed_ = 0.0;
+    heat_.open();
+}
+
 double ThermalContact::area(double bowForce) const noexcept
 {
     if (bowForce != areaForce_)

@@ -26,6 +26,9 @@ class ThermalContact
     double predict(const JunctionSolution& trial, double bowForce) const noexcept;
     /// Advance the heat balance with this sample's solution.
     void commit(const JunctionSolution& solution, double bowForce) noexcept;
+    /// Advance the heat balance with the bow lifted (HeatBalance::open); the next predictor starts from no
+    /// power.
+    void open() noexcept;
 
     /// The calibrated property at rise T, read at T + ambientOffset (a warmer rosin starts further up).
     double property(double temperatureRise) const noexcept

@@ -46,10 +46,10 @@ JunctionSolution ViscousThermalLaw::solve(const JunctionInput& in) noexcept
         return {dvh, 0.0, false};
     if (Fb == 0.0)
     {
-        // Bow lifted: zero contact area, so c = 0 at any temperature and every pass below would give this;
-        // only the heat balance moves on.
+        // Bow lifted: zero contact area, so c = 0 at any temperature, and the open contact moves no heat
+        // (HeatBalance::open).
         const JunctionSolution s = solveLinear(dvh, twoZ, 0.0);
-        thermal_.commit(s, Fb);
+        thermal_.open();
         return s;
     }
     const HeatBalance& heat = thermal_.heat();

@@ -2,7 +2,7 @@
 // the same junctions: the same stick/slide decisions, friction forces and contact temperatures to rounding
 // (the lanes add the stationary-side history in another order). The junctions sweep each lane through
 // sticking, sliding both ways and heating: dv_h = A sin(2 pi f t), A 0.8-3.6 m/s, at 0.3-2.4 N, 2Z = 1.1
-// kg/s, 0.1 s.
+// kg/s, 0.1 s, each lane's bow lifted (no force) for a third of the time.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -38,7 +38,7 @@ TEST(PlasticLanes, EachLaneIsThePlasticLaw)
         const double t = k / rate;
         for (int l = 0; l < kLanes; ++l)
         {
-            in.bowForce[l] = 0.3 * (l + 1);
+            in.bowForce[l] = (k / 800 + l) % 3 == 2 ? 0.0 : 0.3 * (l + 1); // lifted a third of the time
             in.dvHistory[l] = (0.8 + 0.4 * l) * std::sin(2.0 * std::numbers::pi * (50.0 + 20.0 * l) * t);
         }
         lanes.solve(in, out);
@@ -47,8 +47,8 @@ TEST(PlasticLanes, EachLaneIsThePlasticLaw)
             const JunctionSolution s = laws[l]->solve({in.dvHistory[l], twoZ, in.bowForce[l]});
             ASSERT_EQ(out[l].sticking, s.sticking) << "lane " << l << ", sample " << k;
             (s.sticking ? sticking : sliding)++;
-            worstForce =
-                std::max(worstForce, std::abs(out[l].frictionForce - s.frictionForce) / in.bowForce[l]);
+            worstForce = std::max(worstForce, std::abs(out[l].frictionForce - s.frictionForce) /
+                                                  std::max(in.bowForce[l], 0.3));
             const double T = laws[l]->contactTemperature();
             worstTemperature = std::max(worstTemperature, std::abs(lanes.contactTemperature(l) - T));
             hottest = std::max(hottest, T);
