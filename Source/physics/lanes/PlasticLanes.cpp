@@ -174,22 +174,24 @@ template <typename M> ROSIN_KERNEL_BODY bool any(M mask) noexcept
     return all != 0;
 }
 
-/// washout::firstStepFactor and washout::decay of x = |dv| dt / ell (series below 0.25, as they are).
+/// washout::firstStepFactor and washout::decay of x = |dv| dt / ell: their series, and the functions
+/// themselves in the lanes past the series' limit.
 template <typename V> ROSIN_KERNEL_BODY void washoutTerms(V x, V& firstStep, V& decay) noexcept
 {
-    firstStep = 1.0 - x * (1.0 / 3.0 - x * (1.0 / 10.0 - x * (1.0 / 42.0 - x * (1.0 / 216.0 - x / 1320.0))));
-    decay = 1.0 - x * (1.0 - x * (0.5 - x * (1.0 / 6.0 - x * (1.0 / 24.0 - x * (1.0 / 120.0 - x / 720.0)))));
-    if (any(!(x < 0.25)))
+    firstStep = washout::firstStepSeries(x);
+    decay = washout::decaySeries(x);
+    if (any(!(x < washout::kSeriesLimit)))
         for (int l = 0; l < static_cast<int>(sizeof(V) / sizeof(double)); ++l)
-            if (!(x[l] < 0.25))
+            if (!(x[l] < washout::kSeriesLimit))
                 firstStep[l] = washout::firstStepFactor(x[l]), decay[l] = washout::decay(x[l]);
 }
+/// washout::depositFactor, likewise.
 template <typename V> ROSIN_KERNEL_BODY V depositFactor(V x) noexcept
 {
-    V d = 1.0 - x * (0.5 - x * (1.0 / 6.0 - x * (1.0 / 24.0 - x * (1.0 / 120.0 - x / 720.0))));
-    if (any(!(x < 0.25)))
+    V d = washout::depositSeries(x);
+    if (any(!(x < washout::kSeriesLimit)))
         for (int l = 0; l < static_cast<int>(sizeof(V) / sizeof(double)); ++l)
-            if (!(x[l] < 0.25))
+            if (!(x[l] < washout::kSeriesLimit))
                 d[l] = washout::depositFactor(x[l]);
     return d;
 }
@@ -282,6 +284,11 @@ template <int bytes> ROSIN_KERNEL_BODY void stepBody(const StepData& d) noexcept
 }
 
 ROSIN_KERNEL_VARIANTS_BY_WIDTH(void, step, (const StepData& d), (d))
+
+void stepAllLanes(const StepData& d) noexcept
+{
+    ROSIN_KERNEL_DISPATCH(simdLevel(), step, (d));
+}
 } // namespace
 
 void PlasticLanes::solve(const LaneJunctionInput& in, LaneJunctionSolution& out) noexcept
@@ -320,7 +327,7 @@ void PlasticLanes::solve(const LaneJunctionInput& in, LaneJunctionSolution& out)
                      toMoving.data(),
                      washout.data(),
                      T.data()};
-    [&] { ROSIN_KERNEL_DISPATCH(simdLevel(), step, (d)); }();
+    stepAllLanes(d);
     for (int l = 0; l < kLanes; ++l)
     {
         out[l] = {dv[l], f[l], stuck[l] != 0.0};

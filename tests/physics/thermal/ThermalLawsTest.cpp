@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <numbers>
 #include <random>
@@ -199,6 +200,8 @@ template <class Law> void expectLiftedBowOnlyCools(Law& law)
         falling = falling && (k == 0 || law.contactTemperature() <= previous);
         previous = law.contactTemperature();
     }
+    std::printf("[ figures  ] %s: contact %.2f K when lifted, string spot %.2f K 0.2 s later\n", law.name(),
+                warm, law.contactTemperature());
     EXPECT_TRUE(noForce) << law.name();
     EXPECT_TRUE(noFlux) << law.name();
     EXPECT_TRUE(sameHeat) << law.name();
