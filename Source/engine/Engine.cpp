@@ -25,6 +25,12 @@ double schellengConductance(const physics::InstrumentConfig& config, std::size_t
     return body + (z0 > 0.0 ? std::numbers::pi * eta / (2.0 * z0) : 0.0);
 }
 
+double bowForceShare(double impedance)
+{
+    static const double reference = physics::stringFromCatalogue(kBowForceReferenceString).impedance();
+    return impedance / reference;
+}
+
 std::unique_ptr<Engine> buildEngine(const InstrumentKey& key, const ProgramExtras& extras,
                                     int programGeneration, long serial, double sampleRate)
 {
@@ -51,6 +57,7 @@ std::unique_ptr<Engine> buildEngine(const InstrumentKey& key, const ProgramExtra
         engine->openFrequencies[k] = engine->instrument.openFrequency(i);
         engine->impedances[k] = engine->instrument.config().strings[k].impedance();
         engine->bridgeConductances[k] = schellengConductance(engine->instrument.config(), k);
+        engine->forceShares[k] = bowForceShare(engine->impedances[k]);
     }
     return engine;
 }

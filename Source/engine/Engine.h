@@ -22,7 +22,18 @@ struct Engine
     std::array<double, 8> openFrequencies{};
     std::array<double, 8> impedances{};         ///< Z0 per string, kg/s (editor's Schelleng diagram)
     std::array<double, 8> bridgeConductances{}; ///< per string, s/kg (schellengConductance)
+    std::array<double, 8> forceShares{};        ///< per string, bowForceShare of its Z0
 };
+
+/// The string whose impedance the Bow force parameter refers to: the cello's C string.
+inline constexpr const char* kBowForceReferenceString = "cello-C2";
+
+/// The share of the Bow force parameter a string of impedance Z0 (kg/s) is bowed with: Z0 over the reference
+/// string's, as a player's arm lightens on thinner strings. Schelleng's maximum force is 2 Z0 v_b / (beta
+/// (mu_s - mu_d)), so every string, on either instrument, plays at the same fraction of it and is flattened
+/// alike by the force (the flattening grows with that fraction). One force for all strings had put the
+/// cello's open A 20 cents flat and the violin's open D 37 cents flat at the default 1 N (session 26).
+double bowForceShare(double impedance);
 
 /// Builds and prepares the instrument of `key` with `extras` at `sampleRate`. A program whose extras do not
 /// build (an invalid preset) is reported on stderr and the instrument's defaults are used.

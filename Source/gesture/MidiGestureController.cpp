@@ -20,9 +20,19 @@ void MidiGestureController::prepare(const double* openFrequenciesHz, int count, 
     chordWindowSamples_ = static_cast<std::int64_t>(std::llround(kChordWindowSeconds * sampleRate));
     for (int i = 0; i < count; ++i)
         openFrequencies_[static_cast<std::size_t>(i)] = openFrequenciesHz[i];
+    forceShares_ = unitShares();
     for (auto& s : strings_)
         s.stroke.prepare(sampleRate, settings);
     reset();
+}
+
+void MidiGestureController::setForceShares(const double* shares, int count) noexcept
+{
+    forceShares_ = unitShares();
+    const int n = std::min(count, count_);
+    if (n < 1 || !std::all_of(shares, shares + n, [](double x) { return x > 0.0 && std::isfinite(x); }))
+        return;
+    std::copy(shares, shares + n, forceShares_.begin());
 }
 
 void MidiGestureController::reset() noexcept
@@ -218,8 +228,8 @@ void MidiGestureController::next(physics::BowInput* inputs) noexcept
         const ChannelControls c = channels_.controls(s.channel);
         const double pressure = s.polyPressure >= 0.0 ? s.polyPressure : c.pressure;
         StrokeTargets t;
-        t.bowForce =
-            std::clamp(p.bowForce * (c.force * pressure), ranges::bowForce.min, ranges::bowForce.max);
+        t.bowForce = std::clamp(p.bowForce * forceShares_[static_cast<std::size_t>(i)] * (c.force * pressure),
+                                ranges::bowForce.min, ranges::bowForce.max);
         t.bowSpeed = std::clamp(p.bowSpeed * c.speed, ranges::bowSpeed.min, ranges::bowSpeed.max);
         t.beta = std::clamp(p.beta * c.beta, ranges::beta.min, ranges::beta.max);
         t.finger = std::clamp(s.finger * c.finger, 0.1, 1.0);

@@ -23,7 +23,8 @@
 // member channel's pressure, CC74 and bend (+-48) to its note only, and a member channel keeps its string
 // while it holds a note (a new note on it is a legato finger change). CC64 and CC120/123 act on all strings.
 // Host parameters (GestureParameters) give the nominal values; controllers scale them; results are clamped
-// to the parameter ranges.
+// to the parameter ranges. Each string gets its own share of the bow force (setForceShares; the engine gives
+// shares in proportion to the strings' impedances, engine::bowForceShare).
 //
 // Threading: prepare() on any non-audio thread; everything else on the audio thread, allocation-free.
 // Events apply at the sample they are handled: the caller handles an event whose sampleOffset is k just
@@ -48,6 +49,11 @@ class MidiGestureController
     /// openFrequenciesHz: ascending open-string fundamentals (count 1..kMaxStrings).
     void prepare(const double* openFrequenciesHz, int count, double sampleRate,
                  const StrokeSettings& settings = {});
+    /// The factor each prepared string's bow force is multiplied by; until set (and after prepare()), or if
+    /// any is not positive and finite, 1 for every string.
+    void setForceShares(const double* shares, int count) noexcept;
+    /// The factor string s's bow force is multiplied by.
+    double forceShare(int s) const noexcept { return forceShares_[static_cast<std::size_t>(s)]; }
     /// Every string at rest, controllers at their reset values, automatic string choice. Keeps the
     /// parameters, the MPE zone and the pitch-bend ranges (configuration a controller sends once).
     void reset() noexcept;
@@ -100,12 +106,19 @@ class MidiGestureController
         std::int64_t noteOnSample = 0;
     };
 
+    static constexpr std::array<double, kMaxStrings> unitShares()
+    {
+        std::array<double, kMaxStrings> a{};
+        a.fill(1.0);
+        return a;
+    }
     void noteOn(int channel, int note, int velocity) noexcept;
     void noteOff(int channel, int note) noexcept;
     void controller(int channel, int number, int value) noexcept;
 
     std::array<StringState, kMaxStrings> strings_{};
     std::array<double, kMaxStrings> openFrequencies_{};
+    std::array<double, kMaxStrings> forceShares_ = unitShares();
     int count_ = 0;
     std::int64_t sampleCounter_ = 0; // samples since reset (chord window)
     std::int64_t chordWindowSamples_ = 1440;

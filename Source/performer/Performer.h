@@ -58,6 +58,12 @@ class Performer
     /// The instrument the next block plays. A rebuilt one (another serial) with the same open strings keeps
     /// the gesture going; other strings (an instrument switch) re-prepare the controller and the ears.
     void follow(long serial, const double* openFrequencies, int strings, double sampleRate) noexcept;
+    /// The factor each string's bow force is multiplied by (gesture::MidiGestureController::setForceShares);
+    /// after prepare() or follow().
+    void setForceShares(const double* shares, int strings) noexcept
+    {
+        controller_.setForceShares(shares, strings);
+    }
     /// Gesture, ears and meters back to rest (the instrument is the caller's).
     void reset() noexcept;
     /// No instrument any more: the next follow() prepares the gesture whatever the strings.

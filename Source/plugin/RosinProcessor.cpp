@@ -215,10 +215,11 @@ void RosinProcessor::publishIdleTelemetry()
         r.openFrequency = r.frequency = static_cast<float>(config.strings[k].fundamental());
         r.impedance = static_cast<float>(config.strings[k].impedance());
         r.bridgeConductance = static_cast<float>(engine::schellengConductance(config, k));
-        r.bowForce = static_cast<float>(snapshot.gesture.bowForce);
+        const double force = snapshot.gesture.bowForce * engine::bowForceShare(config.strings[k].impedance());
+        r.bowForce = static_cast<float>(force);
         r.beta = static_cast<float>(snapshot.gesture.beta);
         r.bowVelocity = 0.0f;
-        r.muStatic = static_cast<float>(law->staticCoefficient(snapshot.gesture.bowForce));
+        r.muStatic = static_cast<float>(law->staticCoefficient(force));
         telemetry_.strings[k].publish(r);
     }
 }

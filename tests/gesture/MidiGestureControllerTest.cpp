@@ -289,6 +289,34 @@ TEST(MidiGestureController, ControllersAndPressureScaleTheParameters)
     EXPECT_NEAR(cents(bent), 200.0 * 8191.0 / 8192.0, 1e-3);
 }
 
+// Each string is bowed with its share of the bow force, controllers on top; a share that is not positive
+// leaves every string at the force as set, and a new prepare() forgets the shares.
+TEST(MidiGestureController, EachStringGetsItsShareOfTheBowForce)
+{
+    GestureParameters p;
+    p.bowForce = 1.0;
+    Rig rig(physics::celloInstrument(), p);
+    const std::array<double, 4> shares{1.0, 0.63, 0.42, 0.35};
+    rig.controller.setForceShares(shares.data(), 4);
+    rig.controller.handleEvent(GestureEvent::noteOn(36, 64));
+    rig.controller.handleEvent(GestureEvent::noteOn(57, 64));
+    for (int k = 0; k < 48000; ++k)
+        rig.step(0);
+    EXPECT_NEAR(rig.in[0].bowForce, 1.0, 1e-9);
+    EXPECT_NEAR(rig.in[3].bowForce, 0.35, 1e-9);
+    rig.controller.handleEvent(GestureEvent::controller(1, 96)); // x2 force
+    for (int k = 0; k < 4800; ++k)
+        rig.step(0);
+    EXPECT_NEAR(rig.in[3].bowForce, 0.7, 1e-6);
+    const std::array<double, 4> broken{1.0, 0.5, -1.0, 0.5};
+    rig.controller.setForceShares(broken.data(), 4);
+    EXPECT_EQ(rig.controller.forceShare(1), 1.0);
+    rig.controller.setForceShares(shares.data(), 4);
+    const auto f = openFrequencies(physics::celloInstrument());
+    rig.controller.prepare(f.data(), 4, kFs);
+    EXPECT_EQ(rig.controller.forceShare(3), 1.0);
+}
+
 TEST(MidiGestureController, OutputDoesNotDependOnHowSamplesAreGrouped)
 {
     // Events handled just before their sample: the same event list gives the same inputs whatever the block.

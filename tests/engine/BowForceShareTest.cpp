@@ -1,0 +1,44 @@
+// The share of the Bow force parameter each string is bowed with (engine::bowForceShare): Z0 over the cello
+// C string's, so that every string of either instrument sits at the same fraction of Schelleng's maximum
+// force 2 Z0 v_b / (beta (mu_s - mu_d)). Expected values from the strings' own tension and linear density,
+// Z0 = sqrt(T mu), computed here independently of StringParameters::impedance.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/Engine.h"
+
+namespace rosin::engine
+{
+namespace
+{
+
+double impedanceFromTensionAndDensity(const physics::StringParameters& s)
+{
+    return std::sqrt(s.tension * s.massPerLength);
+}
+
+TEST(BowForceShare, EveryStringOfEitherInstrumentSitsAtTheSameFractionOfItsSchellengMaximum)
+{
+    const double reference = impedanceFromTensionAndDensity(physics::stringFromCatalogue("cello-C2"));
+    for (int instrument : {0, 1})
+    {
+        InstrumentKey key;
+        key.instrument = instrument;
+        const auto engine = buildEngine(key, ProgramExtras{}, 0, 1, 48000.0);
+        const auto& strings = engine->instrument.config().strings;
+        for (std::size_t k = 0; k < strings.size(); ++k)
+        {
+            const double z0 = impedanceFromTensionAndDensity(strings[k]);
+            EXPECT_NEAR(engine->forceShares[k], z0 / reference, 1e-9 * z0 / reference) << strings[k].name;
+            // Force over Z0, hence the fraction of Schelleng's maximum at any beta and bow speed: the same
+            // for every string at any setting of the parameter.
+            EXPECT_NEAR(engine->forceShares[k] / z0, 1.0 / reference, 1e-9 / reference) << strings[k].name;
+        }
+        EXPECT_LT(engine->forceShares[strings.size() - 1], engine->forceShares[0]);
+    }
+    EXPECT_DOUBLE_EQ(bowForceShare(reference), 1.0);
+}
+
+} // namespace
+} // namespace rosin::engine
