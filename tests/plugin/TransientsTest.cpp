@@ -2,8 +2,8 @@
 // same sample) and at the note-off, the largest sample-to-sample step of the output stays within 1.5 times
 // the largest step of the note's own steady sound (0.5-0.95 s and 1.5-1.95 s). A click is a step the steady
 // sound never makes; the flybacks of Helmholtz motion make the steady steps themselves. Measured (radiated
-// sound, default output): cello-plastic C2-D4 transitions at 0.02-1.17 x the steady step, violin-thermal
-// G3-A5 at 0.16-1.05 x. The viscous law is left out: its bow changes start forward slips (seed 000: "forward
+// sound, default output): cello-plastic C2-D4 transitions at 0.02-1.10 x the steady step, violin-thermal
+// G3-A5 at 0.04-1.06 x. The viscous law is left out: its bow changes start forward slips (seed 000: "forward
 // slipping"), bursts of up to 3.2 x the steady step on A3 that are its physics.
 #include <gtest/gtest.h>
 
