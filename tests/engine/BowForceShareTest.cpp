@@ -1,7 +1,8 @@
 // The share of the Bow force parameter each string is bowed with (engine::bowForceShare): Z0 over the cello
 // C string's, so that every string of either instrument sits at the same fraction of Schelleng's maximum
-// force 2 Z0 v_b / (beta (mu_s - mu_d)). Expected values from the strings' own tension and linear density,
-// Z0 = sqrt(T mu), computed here independently of StringParameters::impedance.
+// force 2 Z0 v_b / (beta (mu_s - mu_d)). This checks the engine's shares against that definition, from the
+// strings' tension and linear density (Z0 = sqrt(T mu)); what the shares do to the sound (open strings within
+// 2.4 cents at the default force, 12-37 cents flat without them) is PluginPitch's.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,9 +32,6 @@ TEST(BowForceShare, EveryStringOfEitherInstrumentSitsAtTheSameFractionOfItsSchel
         {
             const double z0 = impedanceFromTensionAndDensity(strings[k]);
             EXPECT_NEAR(engine->forceShares[k], z0 / reference, 1e-9 * z0 / reference) << strings[k].name;
-            // Force over Z0, hence the fraction of Schelleng's maximum at any beta and bow speed: the same
-            // for every string at any setting of the parameter.
-            EXPECT_NEAR(engine->forceShares[k] / z0, 1.0 / reference, 1e-9 / reference) << strings[k].name;
         }
         EXPECT_LT(engine->forceShares[strings.size() - 1], engine->forceShares[0]);
     }

@@ -87,7 +87,8 @@ void checkRange(const PitchCase& c)
 // 0.35 N, the violin's G, D, A and E with 0.27, 0.17, 0.13 and 0.13 N. The plastic law's Helmholtz window on
 // D3 at v_b 0.1 m/s, beta 0.1 is 0.21-0.92 N (`rosin scan schelleng --friction plastic --bow-speed 0.1`); its
 // upper limit scales as Z0 and its lower one about as Z0^2, so 0.42 N sits near the window's middle (on a log
-// scale) on the D string and the others sit alike. Before the shares, one force for every string put the
+// scale) on the D string, every string sits at the same fraction of its upper limit, and the thinner ones
+// further above their lower limits than the thicker. Before the shares, one force for every string put the
 // default 1 N above the D string's upper limit (open A3 20 cents flat) and the tests bowed at 0.6 N.
 TEST(PluginPitch, CelloNotesC2ToA5SoundWithinFiveCents)
 {
