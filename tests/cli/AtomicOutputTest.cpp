@@ -12,7 +12,7 @@
 #include "config/ConfigError.h"
 #include "config/TempFiles.h"
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 namespace fs = std::filesystem;
 using rosin::test::cli::quote;
@@ -33,7 +33,6 @@ void writeSomeSamples(rosin::cli::WavWriter& wav)
     const float* channels[] = {samples.data()};
     wav.write(channels, static_cast<int>(samples.size()));
 }
-} // namespace
 
 TEST(AtomicOutput, TextReplacesTheFileWholeAndFailsWithoutTrace)
 {
@@ -94,3 +93,5 @@ TEST(AtomicOutput, KilledRenderLeavesTheEarlierTake)
     EXPECT_EQ(WEXITSTATUS(raw), 128 + 9) << "the render was not running when it was killed";
     EXPECT_EQ(slurp(take), "the previous take");
 }
+
+} // namespace ROSIN_FILE_LOCAL

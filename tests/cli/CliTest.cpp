@@ -17,7 +17,7 @@
 #include "physics/body/BridgeBody.h"
 #include "physics/modal/SimdLevel.h"
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 using rosin::test::cli::quote;
@@ -334,4 +334,4 @@ TEST(CliInProcess, DispatcherIsCallableFromALibrary)
     EXPECT_NE(err3.str().find("a different file from --out"), std::string::npos) << err3.str();
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL

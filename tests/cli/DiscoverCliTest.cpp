@@ -22,7 +22,7 @@
 #include "discovery/EffectCatalog.h"
 #include "discovery/SimulationModel.h"
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 namespace fs = std::filesystem;
 using rosin::test::cli::Result;
@@ -374,4 +374,4 @@ TEST_F(DiscoverCli, MissingDatasetArgumentIsAUsageError)
     EXPECT_EQ(r.status, 2) << r.err;
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL

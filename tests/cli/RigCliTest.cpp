@@ -10,7 +10,7 @@
 #include "CliSupport.h"
 #include "config/TempFiles.h"
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 using rosin::test::cli::quote;
 using rosin::test::cli::Result;
@@ -110,4 +110,4 @@ TEST(RigCli, BadRigFieldNamesFileFieldAndExpectation)
     EXPECT_NE(r.err.find("kg"), std::string::npos) << r.err;
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL

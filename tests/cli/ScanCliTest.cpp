@@ -15,7 +15,7 @@
 
 #include "config/TempFiles.h"
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 namespace fs = std::filesystem;
 
@@ -85,7 +85,6 @@ std::vector<std::string> tiny(const std::string& out, std::vector<std::string> m
     args.insert(args.end(), more.begin(), more.end());
     return args;
 }
-} // namespace
 
 TEST_F(ScanCli, HelpDocumentsTheOptions)
 {
@@ -353,3 +352,5 @@ TEST_F(ScanCli, CompareDrawsTheDifferenceOfTwoScans)
         << missing.err;
     EXPECT_EQ(scan({"compare", "a", "--out", "diff3"}).status, 2);
 }
+
+} // namespace ROSIN_FILE_LOCAL

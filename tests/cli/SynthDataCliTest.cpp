@@ -23,7 +23,7 @@
 #include "lab/FirstSlip.h"
 #include "scan/Axis.h"
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 namespace fs = std::filesystem;
 using namespace rosin::discovery;
@@ -77,7 +77,6 @@ nlohmann::json readJson(const std::string& file)
 {
     return nlohmann::json::parse(slurp(file));
 }
-} // namespace
 
 TEST_F(SynthDataCli, HelpDocumentsTheOptionsAndTheEffects)
 {
@@ -375,3 +374,5 @@ TEST_F(SynthDataCli, FirstSlipFrictionRisesWithJunctionGrowth)
     EXPECT_EQ(higher, compared);
     EXPECT_GT(ratio / compared, 1.1);
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -10,7 +10,7 @@
 
 namespace rosin::gesture
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 constexpr double kFs = 48000.0;
@@ -232,5 +232,5 @@ TEST(BowGesture, PrepareRejectsInvalidScripts)
     EXPECT_THROW(g.prepare(GestureScript{}, GestureStart{}, kFs), GestureError);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::gesture

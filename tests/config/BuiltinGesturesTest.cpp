@@ -7,7 +7,7 @@
 
 namespace rosin::gesture
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 TEST(BuiltinGestures, SteadyDefaults)
@@ -122,5 +122,5 @@ TEST(GestureLimits, BoundariesAreInclusiveExceptSecondsMinimum)
     EXPECT_FALSE(limits::beta.contains(std::numeric_limits<double>::quiet_NaN()));
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::gesture

@@ -9,7 +9,7 @@
 
 namespace rosin::config
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 TEST(GestureScriptLoader, ReadsTheDocumentedExample)
@@ -162,5 +162,5 @@ TEST(GestureScriptLoader, MissingFileIsNamed)
     }
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::config

@@ -12,7 +12,7 @@
 
 namespace rosin::config
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 // Sets ROSIN_PRESET_DIR for one test and restores it.
@@ -287,5 +287,5 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& info) { return std::string(info.param.name); });
 #undef P
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::config

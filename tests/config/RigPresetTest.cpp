@@ -10,7 +10,7 @@
 
 namespace rosin::config
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 TEST(RigPreset, CantileverIsSeed000sRig)
@@ -87,5 +87,5 @@ INSTANTIATE_TEST_SUITE_P(
                       BadRig{R"({"type":"oscillator","normalForce":63})", "rig.normalForce", "N"},
                       BadRig{R"({"type":"oscillator","mass":0.02})", "rig.mass", ""}));
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::config

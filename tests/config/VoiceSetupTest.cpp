@@ -8,7 +8,7 @@
 
 namespace rosin::config
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 TEST(VoiceSetup, DefaultIsTheGalluzzoRig)
@@ -88,5 +88,5 @@ TEST(VoiceSetup, UnknownNamesFromCodeAreReportedNotCrashed)
     }
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::config

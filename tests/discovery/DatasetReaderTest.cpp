@@ -8,7 +8,7 @@
 
 namespace rosin::discovery
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 TEST(DatasetReader, AcceptsTheSpecExample)
@@ -151,5 +151,5 @@ TEST(DatasetReader, AcceptsTheSampleRateLimitsAndEveryChannelKind)
     }
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::discovery

@@ -8,7 +8,7 @@
 
 namespace rosin::discovery
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 void expectSameString(const physics::StringParameters& a, const physics::StringParameters& b)
@@ -116,5 +116,5 @@ TEST(DatasetRoundTrip, CreatesTheFolder)
     EXPECT_EQ(readDatasetDescription(folder).trials.size(), 1u);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::discovery

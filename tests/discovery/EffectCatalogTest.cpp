@@ -12,7 +12,7 @@
 
 using namespace rosin::discovery;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double kFs = 44100.0;
 
@@ -24,7 +24,6 @@ SimulationModel withEffect(const std::string& name, const std::vector<double>& v
     applyEffect(*effect, values, model);
     return model;
 }
-} // namespace
 
 TEST(EffectCatalog, NamesTheSixEffectsOfIssue5InOrder)
 {
@@ -244,3 +243,5 @@ TEST(EffectCatalog, JunctionGrowthIsFittedAlongTheGainAtAFirstHold)
             EXPECT_EQ(parameterValues(e, v), v) << e.name;
         }
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -14,7 +14,7 @@
 
 using namespace rosin::discovery;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 std::size_t indexOf(const std::string& name)
 {
@@ -59,7 +59,6 @@ std::vector<std::vector<double>> corners(const Effect& effect)
     }
     return points;
 }
-} // namespace
 
 TEST(EffectStart, TuningAndChainKeepTheirCalibrationTheRigsParametersStartAsStated)
 {
@@ -117,3 +116,5 @@ TEST(EffectStart, NoEffectOfTheCatalogRetunesTheStringTheTensionDoes)
     EXPECT_FALSE(nuisanceParameters()[indexOf("stringLoss")].startsCalibrated);
     EXPECT_FALSE(nuisanceParameters()[indexOf("contactRadius")].startsCalibrated);
 }
+
+} // namespace ROSIN_FILE_LOCAL

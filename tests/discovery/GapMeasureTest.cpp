@@ -15,7 +15,7 @@
 
 using namespace rosin::discovery;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 TrialFeatures withFeature(std::size_t f, double v)
 {
@@ -31,7 +31,6 @@ FeatureScatter unitScatter(std::size_t trials)
     s.sensitivity.assign(trials, {});
     return s;
 }
-} // namespace
 
 TEST(GapMeasure, AFeatureSeenOnOneSideCountsAsThreeSigma)
 {
@@ -232,3 +231,5 @@ TEST(ModelSensitivity, LargestDepartureOrNotComparableWhenAFeatureFlips)
     EXPECT_TRUE(std::isnan(scatter.trialSigma(0, kTransientPeriods)));
     EXPECT_EQ(scatter.trialSigma(5, kJump), 0.04); // no sensitivity known: the scatter alone
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -9,7 +9,7 @@
 
 namespace rosin::discovery
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 using Json = nlohmann::json;
@@ -233,5 +233,5 @@ TEST(MalformedDataset, EmptyFileAndMissingDescriptionAndMissingFolder)
     }
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::discovery

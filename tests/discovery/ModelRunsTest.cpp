@@ -7,7 +7,7 @@
 #include "discovery/discover/ModelRuns.h"
 #include "physics/string/StringParameters.h"
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 using namespace rosin::discovery;
 
@@ -64,4 +64,4 @@ TEST(ModelRuns, ChainOnlyChangeReusesTheStringAndGivesTheSameFeatures)
     EXPECT_EQ(fromSilence[1], fresh[1]);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL

@@ -5,7 +5,7 @@
 
 namespace rosin::discovery
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 Trial guettler(double beta, double force, double acceleration, bool valid = true)
@@ -119,5 +119,5 @@ TEST(ScanGrid, MixedRecordedAndEmpty)
     EXPECT_EQ(findScanGrid(std::vector<Trial>{}).kind, ScanKind::Empty);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::discovery

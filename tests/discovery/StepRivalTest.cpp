@@ -12,7 +12,7 @@
 
 using namespace rosin::discovery;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 EffectScore candidate(const char* name, bool significant, double gain, std::vector<double> shares)
 {
@@ -23,7 +23,6 @@ EffectScore candidate(const char* name, bool significant, double gain, std::vect
     s.heldOutShares = std::move(shares);
     return s;
 }
-} // namespace
 
 TEST(StepRival, NoneWhenNoOtherCandidateIsSignificant)
 {
@@ -65,3 +64,5 @@ TEST(StepRival, CandidatesAlikeTrialByTrialAreNotDecided)
     EXPECT_GT(rival->test.pValue, 0.3); // mean difference exactly 0: about half of the flips reach it
     EXPECT_FALSE(rival->decided());
 }
+
+} // namespace ROSIN_FILE_LOCAL

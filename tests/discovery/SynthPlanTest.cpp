@@ -16,7 +16,7 @@
 
 using namespace rosin::discovery;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 SynthSettings guettler(std::size_t forces, std::size_t accelerations, std::uint64_t seed = 1)
 {
@@ -42,7 +42,6 @@ double acceleration(const Gesture& g)
 {
     return std::get<ConstantAcceleration>(g).acceleration;
 }
-} // namespace
 
 TEST(SynthPlan, NominalSettingsLieOnTheGridAndTheSimulatedOnesScatter)
 {
@@ -208,3 +207,5 @@ TEST(SynthPlan, SimulatorFollowsTheGesture)
     EXPECT_EQ(channelSamples(sim.run(t), "bridgeForce"), first); // reset between trials
     EXPECT_THROW(channelSamples(samples, "contactTemperature"), std::invalid_argument);
 }
+
+} // namespace ROSIN_FILE_LOCAL

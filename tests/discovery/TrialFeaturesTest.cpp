@@ -12,7 +12,7 @@
 
 using namespace rosin::discovery;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double kFs = 44100.0;
 
@@ -23,7 +23,6 @@ std::vector<double> late(std::vector<double> x, std::size_t samples)
     x.resize(n);
     return x;
 }
-} // namespace
 
 TEST(TrialFeatures, ALateRecordIsAlignedToTheStrokeByItsBowVelocity)
 {
@@ -55,8 +54,6 @@ TEST(TrialFeatures, ALateRecordIsAlignedToTheStrokeByItsBowVelocity)
     EXPECT_NEAR(*unaligned[kFirstSlipTime] - *onTime[kFirstSlipTime], delay / kFs, 2e-5);
 }
 
-namespace
-{
 // The features of a steady note simulated with the default model at (beta, force) and 0.1 m/s.
 TrialFeatures steadyNote(double beta, double bowForce, double seconds)
 {
@@ -77,7 +74,6 @@ TrialFeatures steadyNote(double beta, double bowForce, double seconds)
         std::sqrt(SimulationModel{}.preset.string.tension * SimulationModel{}.preset.string.massPerLength);
     return computeTrialFeatures(force, c);
 }
-} // namespace
 
 // Ideal Helmholtz motion drives the bridge with a sawtooth of peak-to-peak 2 Z0 v_b / beta (the corner's
 // slope jump times T); a simulated steady note in Helmholtz motion keeps most of it: its steadyLevel
@@ -107,3 +103,5 @@ TEST(TrialFeatures, SteadyLevelIsReadOutsideHelmholtzMotionToo)
     EXPECT_LT(*f[kSteadyLevel], 6.0);
     EXPECT_GT(*f[kSteadyLevel], -20.0);
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -9,7 +9,7 @@
 
 namespace rosin::discovery
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 namespace fs = std::filesystem;
@@ -86,5 +86,5 @@ TEST(TrialPath, ResolvesRelativeToTheFolder)
     EXPECT_THROW(trialFilePath(d, outside), DatasetError);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::discovery

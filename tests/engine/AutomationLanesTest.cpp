@@ -9,7 +9,7 @@
 
 namespace rosin::test
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 TEST(AutomationLanes, EveryParameterCanBeAutomated)
@@ -64,5 +64,5 @@ TEST(AutomationLanes, MistakesNameTheFieldAndTheExpectation)
               std::string::npos);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::test

@@ -11,7 +11,7 @@
 
 namespace rosin::engine
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 double impedanceFromTensionAndDensity(const physics::StringParameters& s)
@@ -38,5 +38,5 @@ TEST(BowForceShare, EveryStringOfEitherInstrumentSitsAtTheSameFractionOfItsSchel
     EXPECT_DOUBLE_EQ(bowForceShare(reference), 1.0);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::engine

@@ -13,7 +13,7 @@
 
 namespace rosin::engine
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 TEST(EngineParameters, TableOrderIsTheIdsOrderAndTheSnapshotIndex)
@@ -139,5 +139,5 @@ TEST(OfflineInstrument, RenderDoesNotDependOnTheBlockSize)
     }
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::engine

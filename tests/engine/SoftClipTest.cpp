@@ -9,7 +9,7 @@
 
 namespace rosin::engine
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 TEST(SoftClip, IsTheIdentityBelowTheKnee)
@@ -42,5 +42,5 @@ TEST(SoftClip, ValueAndSlopeAreContinuousAtTheKnee)
     EXPECT_NEAR(softClip(kSoftClipKnee + 2.0 * room), kSoftClipKnee + room * std::tanh(2.0), 1e-15);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::engine

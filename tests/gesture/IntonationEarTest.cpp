@@ -11,7 +11,7 @@
 
 namespace rosin::gesture
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 constexpr double kFs = 48000.0;
@@ -163,5 +163,5 @@ TEST(IntonationEar, CorrectionIsBounded)
     EXPECT_LE(std::abs(ear.correctionCents()), IntonationEar::kMaxCents);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::gesture

@@ -12,7 +12,7 @@
 
 namespace rosin::gesture
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 constexpr double kFs = 48000.0;
@@ -343,5 +343,5 @@ TEST(MidiGestureController, OutputDoesNotDependOnHowSamplesAreGrouped)
     }
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::gesture

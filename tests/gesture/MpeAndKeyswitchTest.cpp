@@ -15,7 +15,7 @@
 
 namespace rosin::gesture
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 constexpr double kFs = 48000.0;
@@ -412,5 +412,5 @@ TEST(Keyswitch, ResetReturnsToTheAutomaticChoice)
     EXPECT_EQ(rig.controller.keyswitchString(), -1);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::gesture

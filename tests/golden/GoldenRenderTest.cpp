@@ -27,7 +27,7 @@
 
 namespace rosin::test
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 namespace fs = std::filesystem;
@@ -163,5 +163,5 @@ TEST(KernelPaths, AvxTwoAndAvxFiveHundredTwelveRenderTheSameBits)
     fs::remove_all(work);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::test

@@ -9,12 +9,11 @@
 
 #include "lab/ContactCycle.h"
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 using rosin::lab::normalisedLoopArea;
 using rosin::lab::slipFraction;
 constexpr double pi = std::numbers::pi;
-} // namespace
 
 TEST(ContactCycle, IdealHelmholtzMotionSlipsForBetaOfThePeriod)
 {
@@ -57,3 +56,5 @@ TEST(ContactCycle, EllipticLoopEnclosesPiABPerPeriodOverTheBowSpeed)
     EXPECT_NEAR(*normalisedLoopArea(v, bow, curve, N, 0, v.size(), period), 0.0, 1e-6);
     EXPECT_FALSE(normalisedLoopArea(v, bow, f, N, 0, period, period)); // one period is too short
 }
+
+} // namespace ROSIN_FILE_LOCAL

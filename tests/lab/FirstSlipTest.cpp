@@ -10,7 +10,7 @@
 
 using namespace rosin::lab;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double kFs = 48000.0;
 constexpr double kPeriod = 1.0 / 146.8; // s
@@ -57,7 +57,6 @@ FirstSlipOptions options(double beta, double N, double highPass)
     o.highPassCutoffHz = highPass;
     return o;
 }
-} // namespace
 
 TEST(FirstSlip, SyntheticTrialThroughNoiseAndHighPass)
 {
@@ -125,3 +124,5 @@ TEST(FirstSlip, HighPassInverseIsExactForItsDiscretisation)
         worst = std::max(worst, std::abs(back[k] - x[k]));
     EXPECT_LT(worst, 1e-9);
 }
+
+} // namespace ROSIN_FILE_LOCAL

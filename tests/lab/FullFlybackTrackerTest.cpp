@@ -15,7 +15,7 @@
 using namespace rosin;
 using namespace rosin::lab;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double kShare = 0.25;
 
@@ -45,7 +45,6 @@ physics::VoiceSample sample(bool sticking, double bowVelocity, double slip)
     s.bowPointVelocity = bowVelocity - slip;
     return s;
 }
-} // namespace
 
 TEST(FullFlybackTracker, FollowsTheOfflineAnalysisOfASimulatedAttack)
 {
@@ -92,3 +91,5 @@ TEST(FullFlybackTracker, HandlesEdgeCasesLikeTheOfflineAnalysis)
     EXPECT_FALSE(tracker.pendingOnset().has_value()); // the last one already counts
     expectSameAsOfflineAtEverySample(s, beta, 1);
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -9,7 +9,7 @@
 
 using namespace rosin::lab;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double kFs = 44100.0;
 
@@ -34,7 +34,6 @@ GestureStartOptions options(double a, double noiseRms)
     o.noiseRms = noiseRms;
     return o;
 }
-} // namespace
 
 TEST(GestureStart, ExactRecordGivesTheDelayBack)
 {
@@ -82,3 +81,5 @@ TEST(GestureStart, ARecordThatIsNotTheStatedStrokeIsNotUsed)
     EXPECT_FALSE(gestureStartFromBowVelocity(strokeVelocity(1.5, 0.02, 0.4, 0.0, 1), options(1.5, 0.0)));
     EXPECT_FALSE(gestureStartFromBowVelocity(std::vector<double>(100, 0.0), options(1.5, 0.0))); // too short
 }
+
+} // namespace ROSIN_FILE_LOCAL

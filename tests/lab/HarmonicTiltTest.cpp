@@ -10,7 +10,7 @@
 
 #include "lab/HarmonicTilt.h"
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 using rosin::lab::harmonicTiltDb;
 using rosin::lab::HarmonicTiltOptions;
@@ -52,7 +52,6 @@ double onePoleAmplitude(double f)
 {
     return std::sqrt(onePolePower(f));
 }
-} // namespace
 
 TEST(HarmonicTilt, IdealSawtoothMatchesTheSumOfInverseSquares)
 {
@@ -93,3 +92,5 @@ TEST(HarmonicTilt, RefusesTooShortAStretchOrABandPastNyquist)
     EXPECT_FALSE(harmonicTiltDb(x, 0, x.size(), o));
     EXPECT_FALSE(harmonicTiltDb(std::vector<double>(8192, 0.0), 0, 8192, HarmonicTiltOptions{}));
 }
+
+} // namespace ROSIN_FILE_LOCAL

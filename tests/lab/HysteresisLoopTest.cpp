@@ -11,7 +11,7 @@
 
 namespace rosin::lab
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 TEST(HysteresisLoop, AreaOfACircleHasTheSenseOfTraversal)
@@ -52,5 +52,5 @@ TEST(HysteresisLoop, WritesOneCsvRowPerKeptSample)
     EXPECT_DOUBLE_EQ(loop.stickingFraction(), 1.0);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::lab

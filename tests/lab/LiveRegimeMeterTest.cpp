@@ -14,7 +14,7 @@
 using namespace rosin;
 using namespace rosin::lab;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double kFs = 48000.0, kF0 = 146.83, kVb = 0.1, kBeta = 0.1;
 const double kPeriod = kFs / kF0;
@@ -41,7 +41,6 @@ bool slipsWithin(long k, double cycle, double share, double offset = 0.0)
 {
     return std::fmod(static_cast<double>(k) + offset, cycle) < share * cycle;
 }
-} // namespace
 
 TEST(LiveRegimeMeter, CanonicalMotionsGetTheOfflineLabels)
 {
@@ -98,3 +97,5 @@ TEST(LiveRegimeMeter, AgreesWithTheOfflineClassifierOnASimulatedString)
     EXPECT_EQ(m.regime(), offline.regime);
     EXPECT_NEAR(m.flybacksPerPeriod(), 1.0, 0.15);
 }
+
+} // namespace ROSIN_FILE_LOCAL

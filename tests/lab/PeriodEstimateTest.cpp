@@ -8,7 +8,7 @@
 
 using namespace rosin::lab;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 // A sawtooth of period P samples (rising, falling at once, as the bridge force of Helmholtz motion) with
 // its fall spread over two samples (a band-limited corner) and white noise.
@@ -27,7 +27,6 @@ std::vector<double> sawtooth(double P, std::size_t n, double noise, unsigned see
         x[k] = 0.5 * (x[k] + x[k - 1]);
     return x;
 }
-} // namespace
 
 TEST(PeriodEstimate, SawtoothPeriodToAHundredthOfASample)
 {
@@ -55,3 +54,5 @@ TEST(PeriodEstimate, TooShortOrOffTheSearchIsNothing)
     EXPECT_FALSE(refinedPeriod(x, 0, 800, 300.0).has_value());      // under three periods
     EXPECT_FALSE(refinedPeriod(x, 0, x.size(), 250.0).has_value()); // the peak is beyond +-5 %
 }
+
+} // namespace ROSIN_FILE_LOCAL

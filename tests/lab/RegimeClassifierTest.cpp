@@ -12,7 +12,7 @@
 
 using namespace rosin::lab;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double kFs = 48000.0;
 constexpr double kP = kFs / 146.8; // cello D3 nominal period, samples
@@ -39,7 +39,6 @@ void print(const char* what, const Both& b)
                 regimeName(b.force.regime), b.force.slipsPerPeriod, b.force.slipsPerCycle,
                 b.force.measuredPeriod / kP, b.force.sawtoothness, b.force.intervalCv);
 }
-} // namespace
 
 // An ideal sawtooth: one slip per period of length beta P; sawtoothness 1 by its Fourier series.
 TEST(RegimeClassifier, SawtoothIsHelmholtz)
@@ -203,3 +202,5 @@ TEST(RegimeClassifier, NoStickingIsConstantSlippingAndNoSlipIsNoSlip)
                 regimeName(sliding.regime), regimeName(stuck.regime), regimeName(steadyForce.regime),
                 regimeName(rampForce.regime));
 }
+
+} // namespace ROSIN_FILE_LOCAL

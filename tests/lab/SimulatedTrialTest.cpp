@@ -20,7 +20,7 @@ using namespace rosin;
 using namespace rosin::physics;
 using namespace rosin::lab;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double kFs = 48000.0;
 
@@ -45,7 +45,6 @@ void split(const rosin::test::Trace& t, std::vector<double>& force, std::vector<
         sticking.push_back(s.sticking);
     }
 }
-} // namespace
 
 TEST(SimulatedTrial, FirstSlipFromNoisyForceMatchesTheState)
 {
@@ -191,3 +190,5 @@ TEST(SimulatedTrial, LightForceShowsTheLimitOfTheForceOnlyRoute)
                 regimeName(state.regime), state.slipsPerPeriod, state.slipsPerCycle,
                 regimeName(fromForce.regime), fromForce.slipsPerPeriod, fromForce.intervalCv);
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -10,11 +10,10 @@
 
 using namespace rosin::lab;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double kFs = 48000.0;
 constexpr double kP = kFs / 146.8; // cello D3, samples
-} // namespace
 
 TEST(SlipOnsets, EpisodesFromStateAreTheRunsOfSliding)
 {
@@ -102,9 +101,9 @@ TEST(SlipOnsets, FullFlybacksReachAShareOfTheHelmholtzFlybackSpeed)
 // flyback found, at the right sample, and nothing else.
 TEST(SlipOnsets, BridgeForceFlybacksFoundThroughNoiseAndRipple)
 {
-    const auto s = test::stickSlip(static_cast<std::size_t>(0.5 * kFs), kP, {0.0}, {1.0}, 1.0,
-                                   static_cast<std::size_t>(0.1 * kP), 11.0, 0.03);
-    const auto y = test::measured(s.force, 0.003, 0.5, kFs);
+    const auto s = rosin::lab::test::stickSlip(static_cast<std::size_t>(0.5 * kFs), kP, {0.0}, {1.0}, 1.0,
+                                               static_cast<std::size_t>(0.1 * kP), 11.0, 0.03);
+    const auto y = rosin::lab::test::measured(s.force, 0.003, 0.5, kFs);
     const auto onsets = slipOnsetsFromBridgeForce(y, kP);
     ASSERT_EQ(onsets.size(), s.onsets.size());
     long worst = 0;
@@ -125,7 +124,7 @@ TEST(SlipOnsets, SmoothOrQuietForceHasNoSlips)
     EXPECT_TRUE(slipOnsetsFromBridgeForce(sine, kP).empty());
 
     std::vector<double> quiet(static_cast<std::size_t>(0.2 * kFs), 0.3);
-    test::addNoise(quiet, 0.001);
+    rosin::lab::test::addNoise(quiet, 0.001);
     ForceOnsetOptions o;
     o.noiseRms = 0.001;
     EXPECT_TRUE(slipOnsetsFromBridgeForce(quiet, kP, o).empty());
@@ -133,3 +132,5 @@ TEST(SlipOnsets, SmoothOrQuietForceHasNoSlips)
                 slipOnsetsFromBridgeForce(sine, kP).size(), slipOnsetsFromBridgeForce(quiet, kP, o).size(),
                 slipOnsetsFromBridgeForce(quiet, kP).size());
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -9,7 +9,7 @@
 
 using namespace rosin::lab;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double kP = 48000.0 / 146.8; // samples (not an integer: onsets are rounded like real ones)
 
@@ -28,7 +28,6 @@ struct Builder
         slip(); // closes the last period
     }
 };
-} // namespace
 
 // n periods with an extra slip each, then Helmholtz: the transient is exactly n periods long.
 TEST(TransientLength, IrregularPeriodsThenHelmholtzCountExactly)
@@ -153,3 +152,5 @@ TEST(TransientLength, LongSlipsAreNotHelmholtzWhenDurationsAreChecked)
     EXPECT_NEAR(*checked.periods, 4.0, 0.01);
     EXPECT_EQ(measureTransient(episodes, kP).periods, 0.0);
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -8,7 +8,7 @@
 
 #include "performer/Performer.h"
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 using namespace rosin;
 using gesture::GestureEvent;
@@ -168,4 +168,4 @@ TEST(Performer, ARebuiltInstrumentWithTheSameStringsKeepsTheGesture)
     EXPECT_EQ(totalBowForce(p), 0.0);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL

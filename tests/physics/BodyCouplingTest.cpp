@@ -13,7 +13,7 @@
 using namespace rosin;
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double fs = 48000.0;
 
@@ -41,7 +41,6 @@ double decayRate(const std::vector<double>& x, double f)
                                    f - 30.0, f + 30.0);
     return std::log(a1.magnitude / a2.magnitude);
 }
-} // namespace
 
 TEST(BodyCoupling, PartialsDecayFasterByTheBodysLossFactor)
 {
@@ -73,3 +72,5 @@ TEST(BodyCoupling, PartialsDecayFasterByTheBodysLossFactor)
         "%.3f..%.3f 1/s\n",
         100.0 * worst, smallestExtra, extraMax);
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -23,7 +23,7 @@
 
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 constexpr double kFs = 48000.0;
@@ -274,4 +274,4 @@ TEST(LossScale, ScalesTheDecayTime)
     }
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL

@@ -12,7 +12,7 @@
 using namespace rosin;
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 struct HelmholtzFigures
 {
@@ -89,7 +89,6 @@ void expectHelmholtz(Curve curve, const char* name, double force, double beta, b
         cfg.body = celloBody();
     expectHelmholtzWith(cfg, std::make_unique<Law>(curve, name), name, force, beta);
 }
-} // namespace
 
 // The cello D string with the cello body, bowed at 0.05 m/s and beta = 0.1 (seed 001's Schelleng grid speed).
 // Schelleng's maximum force 2 Z0 vb / (beta (mu_s - mu_d)) is 0.64 N for the classical curve and 1.37 N for
@@ -120,3 +119,5 @@ TEST(HelmholtzMotion, PlasticThermalLaw)
     expectHelmholtzWith(cfg, makeFrictionLaw(FrictionModel::Plastic, galluzzoContact()), "plastic", 0.25, 0.1,
                         {1.0, 1.5});
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -6,7 +6,7 @@
 
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 /// Bow one string for 50 ms (a Guettler attack with the classical law), lift the bow, let everything ring.
 struct Ringing
@@ -47,7 +47,6 @@ Ringing ringAfterStroke(InstrumentConfig cfg, int plucked)
         r.others.push_back(instrument.voice(i).storedEnergy());
     return r;
 }
-} // namespace
 
 TEST(Instrument, SharedBodyStaysPassive)
 {
@@ -78,3 +77,5 @@ TEST(Instrument, BridgeCarriesSympatheticResonance)
         "[figure] after bowing D3 on the cello body: energy in C2 %.2e J, G2 %.2e J, A3 %.2e J (D3 %.2e J)\n",
         withBody.others[0], withBody.others[1], withBody.others[3], withBody.others[2]);
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -13,7 +13,7 @@
 using namespace rosin;
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double fs = 48000.0;
 constexpr double beta = 0.0899; // not a rational with small denominator: every mode n <= 30 is excited
@@ -36,7 +36,6 @@ VoiceConfig celloD(bool torsion)
     cfg.torsion = torsion;
     return cfg;
 }
-} // namespace
 
 TEST(LinearString, TransverseModeFrequenciesFollowStiffStringFormula)
 {
@@ -111,3 +110,5 @@ TEST(LinearString, TorsionalModesAtMultiplesOfHalfTorsionalSpeedOverLength)
     }
     std::printf("[figure] worst torsional mode error n<=5: %.4f cents\n", worst);
 }
+
+} // namespace ROSIN_FILE_LOCAL

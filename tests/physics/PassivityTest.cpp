@@ -10,7 +10,7 @@
 using namespace rosin;
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 void expectEnergyNeverIncreases(const VoiceConfig& cfg, double fs)
 {
@@ -37,7 +37,6 @@ void expectEnergyNeverIncreases(const VoiceConfig& cfg, double fs)
     std::printf("[figure] passivity (%s body, %.0f Hz): E0 %.3e J, after 1 s %.3e J, worst rise %.1e of E0\n",
                 cfg.body.name.c_str(), fs, initial, previous, worstRise);
 }
-} // namespace
 
 TEST(Passivity, RigidBridgeWithTorsion)
 {
@@ -54,3 +53,5 @@ TEST(Passivity, CelloBody)
     expectEnergyNeverIncreases(cfg, 48000.0);
     expectEnergyNeverIncreases(cfg, 44100.0);
 }
+
+} // namespace ROSIN_FILE_LOCAL

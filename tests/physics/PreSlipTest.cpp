@@ -13,7 +13,7 @@
 
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 struct PreSlipRun
 {
@@ -80,7 +80,6 @@ PreSlipRun runGuettler(std::unique_ptr<FrictionLaw> law, bool torsion, bool bend
     }
     return run;
 }
-} // namespace
 
 TEST(PreSlip, RigidStickingFollowsStaticParabolaWithoutTorsion)
 {
@@ -127,3 +126,5 @@ TEST(PreSlip, FirstSlipAtTheCurvesStaticCoefficient)
                 classical.muStatic, classical.firstSlipTime, reconstructed.muStatic,
                 reconstructed.firstSlipTime);
 }
+
+} // namespace ROSIN_FILE_LOCAL

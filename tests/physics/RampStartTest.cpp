@@ -15,7 +15,7 @@
 
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double kRate = 48000.0, kBeta = 0.0899;
 
@@ -60,7 +60,6 @@ std::size_t firstSlip(const std::vector<VoiceSample>& s, std::size_t offset = 0)
     const auto it = std::find_if(s.begin(), s.end(), [](const VoiceSample& x) { return !x.sticking; });
     return offset + static_cast<std::size_t>(it - s.begin());
 }
-} // namespace
 
 TEST_F(RampStartTest, StuckStartIsTheUnitStartScaledByTheAcceleration)
 {
@@ -117,3 +116,5 @@ TEST_F(RampStartTest, NothingIsSkippedWithoutAnAccelerationOrALimit)
                      2.0 * 1.2); // mu(0) = 1.2
     EXPECT_FALSE(lanesOf(FrictionModel::Viscous)->friction().restingLimit(1.0).has_value());
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -9,7 +9,7 @@
 using namespace rosin;
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 VoiceConfig celloD()
 {
@@ -26,7 +26,6 @@ double helmholtzPeriod(double fs)
     const auto onsets = test::slipOnsets(t, 1.0);
     return (onsets.back() - onsets.front()) / (onsets.size() - 1);
 }
-} // namespace
 
 TEST(SampleRateConvergence, FirstSlipTime)
 {
@@ -52,3 +51,5 @@ TEST(SampleRateConvergence, HelmholtzPeriod)
     std::printf("[figure] Helmholtz period: %.6f s at 44.1 kHz, %.6f s at 96 kHz (%.3f %%)\n", p1, p2,
                 100 * (p1 / p2 - 1));
 }
+
+} // namespace ROSIN_FILE_LOCAL

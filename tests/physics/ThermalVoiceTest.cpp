@@ -13,7 +13,7 @@
 using namespace rosin;
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double kBeta = 0.0899;
 
@@ -51,7 +51,6 @@ double areaPerNewton(const ContactGeometry& g)
 {
     return g.radius * g.radius / g.referenceForce;
 }
-} // namespace
 
 TEST(ThermalVoice, PlasticFirstSlipAtCalibratedStaticCoefficient)
 {
@@ -103,3 +102,5 @@ TEST(ThermalVoice, ViscousLawSlipsForwardAndPlasticNever)
     std::printf("[figure] largest forward slip (v - v_b): viscous %.3f m/s, plastic %.2e m/s\n", viscous,
                 plastic);
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -14,7 +14,7 @@
 
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double kRate = 48000.0, kBeta = 0.0899;
 constexpr int kSamples = 2400; // 50 ms
@@ -73,7 +73,6 @@ class VoiceLanesAgainstVoice : public ::testing::TestWithParam<FrictionModel>
     BowedStringVoice voice;
     VoiceLanes lanes;
 };
-} // namespace
 
 TEST_P(VoiceLanesAgainstVoice, EachLaneFollowsItsOwnVoice)
 {
@@ -113,3 +112,5 @@ TEST_P(VoiceLanesAgainstVoice, LanesDoNotFeelEachOther)
 
 INSTANTIATE_TEST_SUITE_P(Laws, VoiceLanesAgainstVoice,
                          ::testing::Values(FrictionModel::Classical, FrictionModel::Plastic));
+
+} // namespace ROSIN_FILE_LOCAL

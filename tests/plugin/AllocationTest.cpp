@@ -9,7 +9,7 @@
 
 namespace rosin::test
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 TEST(PluginRealTime, ProcessBlockDoesNotAllocateAfterPrepareToPlay)
@@ -62,5 +62,5 @@ TEST(PluginRealTime, ProcessBlockDoesNotAllocateAfterPrepareToPlay)
     p.serviceEngineBuilds(); // frees the retired engine
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::test

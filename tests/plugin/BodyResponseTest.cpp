@@ -17,7 +17,7 @@
 
 namespace rosin::test
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 constexpr double kFs = 48000.0;
@@ -65,8 +65,6 @@ std::vector<float> renderNote(plugin::RosinProcessor& p, engine::OutputChoice ou
     setParameter(p, plugin::ids::outputLevel, -12.0f);
     return renderHeldNote(p, 50, 0.6, 0.2);
 }
-
-} // namespace
 
 // With the response loaded before playback (as a project or `rosin render --midi --body-response` does) the
 // output is the bridge force convolved with it from the first sample: the plugin's own force output (same
@@ -237,4 +235,5 @@ TEST(BodyResponse, BrokenFilesAreRefusedWithTheReason)
     }
 }
 
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::test

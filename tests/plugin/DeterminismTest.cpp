@@ -11,7 +11,7 @@
 
 namespace rosin::test
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 TEST(PluginDeterminism, DemoPhraseIsBitIdenticalAcrossRunsAndBlockSizes)
@@ -101,5 +101,5 @@ TEST(PluginPrograms, TheProgramsNeedNoPresetFolder)
         EXPECT_EQ(p.getProgramName(i).toStdString(), names[static_cast<std::size_t>(i)]);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::test

@@ -9,7 +9,7 @@
 
 namespace rosin::test
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 juce::MidiMessage randomMessage(std::mt19937& rng)
@@ -97,5 +97,5 @@ TEST(PluginFuzz, RandomAutomationAndMidiForTenSecondsStayFiniteAndBounded)
     p.releaseResources();
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::test

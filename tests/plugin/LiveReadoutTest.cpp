@@ -7,7 +7,7 @@
 
 #include "RosinProcessor.h"
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 using namespace rosin;
 constexpr double kFs = 48000.0;
@@ -31,7 +31,6 @@ int stringPlaying(const plugin::Telemetry& t, double hz)
             return s;
     return -1;
 }
-} // namespace
 
 TEST(LiveReadout, HeldNoteReadsAsHelmholtzThenSilent)
 {
@@ -54,3 +53,5 @@ TEST(LiveReadout, HeldNoteReadsAsHelmholtzThenSilent)
     EXPECT_FALSE(after.bowing);
     EXPECT_STREQ(plugin::regimeDisplayName(after.regime, after.bowing), "silent");
 }
+
+} // namespace ROSIN_FILE_LOCAL

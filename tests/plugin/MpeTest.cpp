@@ -11,7 +11,7 @@
 
 namespace rosin::test
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 constexpr double kFs = 48000.0;
@@ -62,5 +62,5 @@ TEST(PluginMpe, PerNoteBendMovesOnlyItsOwnNote)
     EXPECT_GT(bent.magnitude, 10.0 * unbent.magnitude); // nothing left at the unbent pitch
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::test

@@ -17,7 +17,7 @@
 
 namespace rosin::test
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 const engine::FactoryProgram& program(const std::string& name)
@@ -176,5 +176,5 @@ TEST(OfflineRender, ParameterSetHoldsTheValuesAHostsValueTreeStateHolds)
         }
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::test

@@ -10,7 +10,7 @@
 
 namespace rosin::test
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 constexpr int kBlock = 256;
@@ -74,5 +74,5 @@ TEST(OnScreenKeyboard, LanesKnowTheStringsBeforeAudioStarts)
     EXPECT_NEAR(p.telemetry().strings[0].read().openFrequency, 196.0, 2.0); // G3, before any audio
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::test

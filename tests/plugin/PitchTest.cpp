@@ -19,7 +19,7 @@
 
 namespace rosin::test
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 constexpr double kFs = 48000.0;
@@ -107,5 +107,5 @@ TEST(PluginPitch, ViolinNotesG3ToE7SoundWithinFiveCents)
     checkRange({"violin-thermal", 55, 100, 1.0f, {55, 62, 69, 76}});
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::test

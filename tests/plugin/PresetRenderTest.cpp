@@ -13,7 +13,7 @@
 
 namespace rosin::test
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 class PresetRender : public ::testing::TestWithParam<std::string>
@@ -72,5 +72,5 @@ INSTANTIATE_TEST_SUITE_P(FactoryPresets, PresetRender, ::testing::ValuesIn(instr
                              return name;
                          });
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::test

@@ -20,7 +20,7 @@
 
 namespace rosin::test
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 constexpr double kFs = 48000.0;
@@ -65,8 +65,6 @@ Sound analyse(const std::vector<double>& x, int note)
     s.centroidHz = weighted / above;
     return s;
 }
-
-} // namespace
 
 // The parameter reaches the physics: every string keeps exactly the modes of its own frequency law that lie
 // below 10 kHz (counted here from StringParameters, the string's dispersion relation), the body its modes
@@ -126,4 +124,5 @@ TEST(Quality, LiveSoundsAsTheFullModelWithinACentAndAFewPercentOfBrightness)
     }
 }
 
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::test

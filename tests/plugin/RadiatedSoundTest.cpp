@@ -13,7 +13,7 @@
 
 namespace rosin::test
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 constexpr double kFs = 48000.0;
@@ -59,8 +59,6 @@ NoteFigures analyse(const std::vector<float>& audio)
     return f;
 }
 
-} // namespace
-
 // Issue 18's criterion: |mean| below 1 % of the rms and below 1 % of the energy under 40 Hz, for C2 G2 D3
 // A3 D4 (measured: |mean| <= 0.1 % of the rms, < 0.01 % below 40 Hz). The bridge force the plugin sent
 // before had a mean of 45-78 % of its rms.
@@ -103,4 +101,5 @@ TEST(RadiatedSound, EachOutputChoiceSendsItsOwnQuantity)
     EXPECT_TRUE(apart(sound.centroidAbove60Hz, velocity.centroidAbove60Hz));
 }
 
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::test

@@ -11,7 +11,7 @@
 
 namespace rosin::test
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 juce::MemoryBlock savedState(plugin::RosinProcessor& p)
@@ -50,8 +50,6 @@ double noteRms(plugin::RosinProcessor& p)
     EXPECT_TRUE(allFinite(r.audio));
     return r.audio.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(r.audio.size()));
 }
-
-} // namespace
 
 TEST(PluginStateSafety, NonFiniteAndOutOfRangeValuesRestoreAsDefaults)
 {
@@ -139,4 +137,5 @@ TEST(PluginStateSafety, RestoringRefreshesEverySwitchAndChoiceTheHostHolds)
             << p.getParameters()[static_cast<int>(i)]->getName(64);
 }
 
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::test

@@ -13,7 +13,7 @@
 
 namespace rosin::test
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 void runAudio(plugin::RosinProcessor& p, const std::atomic<bool>& stop, std::atomic<long>& blocks,
@@ -91,5 +91,5 @@ TEST(PluginThreads, EngineSwapsStateAndReadoutsWhileAudioRuns)
     std::printf("[figure] %d host rounds, %ld audio blocks alongside\n", kRounds, blocks.load());
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::test

@@ -15,7 +15,7 @@
 
 namespace rosin::test
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 constexpr double kFs = 48000.0;
@@ -67,8 +67,6 @@ void checkNoClicks(const char* program, std::initializer_list<int> notes)
     }
 }
 
-} // namespace
-
 TEST(Transients, CelloHasNoClicksAtNoteStartBowChangeAndNoteOff)
 {
     checkNoClicks("cello-plastic", {36, 43, 50, 57, 62});
@@ -79,4 +77,5 @@ TEST(Transients, ViolinHasNoClicksAtNoteStartBowChangeAndNoteOff)
     checkNoClicks("violin-thermal", {55, 62, 69, 76, 81});
 }
 
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::test

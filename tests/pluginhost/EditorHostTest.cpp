@@ -13,7 +13,7 @@
 
 using namespace rosin::pluginhost;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 class PluginHostEditor : public ::testing::TestWithParam<const char*>
@@ -86,4 +86,4 @@ TEST_P(PluginHostEditor, OpensAndClosesWhileAudioRuns)
 INSTANTIATE_TEST_SUITE_P(Formats, PluginHostEditor, ::testing::Values("VST3", "LV2"),
                          [](const auto& info) { return std::string(info.param); });
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL

@@ -13,7 +13,7 @@
 
 using namespace rosin::pluginhost;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 class InstalledPluginScan : public ::testing::TestWithParam<const char*>
@@ -80,4 +80,4 @@ TEST_P(InstalledPluginScan, FindsLoadsAndPlaysRosin)
 INSTANTIATE_TEST_SUITE_P(Installed, InstalledPluginScan, ::testing::Values("VST3", "LV2"),
                          [](const auto& info) { return std::string(info.param); });
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL

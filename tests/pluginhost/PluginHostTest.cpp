@@ -18,7 +18,7 @@
 
 using namespace rosin::pluginhost;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 class PluginHost : public ::testing::TestWithParam<const char*>
@@ -397,7 +397,7 @@ TEST_P(PluginHost, InstancesCanBeDeletedAndRecreated)
 INSTANTIATE_TEST_SUITE_P(Formats, PluginHost, ::testing::Values("VST3", "LV2"),
                          [](const auto& info) { return std::string(info.param); });
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 
 int main(int argc, char** argv)
 {

@@ -20,7 +20,7 @@
 
 using namespace rosin::pluginhost;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 class PluginHostState : public ::testing::TestWithParam<const char*>
@@ -146,8 +146,6 @@ std::vector<std::pair<std::string, juce::MemoryBlock>> damagedStates(const juce:
     return out;
 }
 
-} // namespace
-
 TEST_P(PluginHostState, RestoringRefreshesEveryParameterTheHostSees)
 {
     constexpr double sampleRate = 48000.0;
@@ -267,3 +265,5 @@ TEST(PluginHostVst3, ADamagedWrapperTrailerDoesNotCrash)
 
 INSTANTIATE_TEST_SUITE_P(Formats, PluginHostState, ::testing::Values("VST3", "LV2"),
                          [](const auto& info) { return std::string(info.param); });
+
+} // namespace ROSIN_FILE_LOCAL

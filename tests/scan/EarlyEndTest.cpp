@@ -18,7 +18,7 @@
 
 using namespace rosin::scan;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 ScanSpec grid(const char* law, GuettlerTrialEnd end)
 {
@@ -44,7 +44,6 @@ void expectSameTransient(const CellResult& a, const CellResult& whole)
 class EarlyEnd : public ::testing::TestWithParam<const char*>
 {
 };
-} // namespace
 
 TEST_P(EarlyEnd, SameFirstSlipAndTransientAsWholeTrials)
 {
@@ -84,3 +83,5 @@ TEST_P(EarlyEnd, SameFirstSlipAndTransientAsWholeTrials)
 }
 
 INSTANTIATE_TEST_SUITE_P(Laws, EarlyEnd, ::testing::Values("classical", "plastic"));
+
+} // namespace ROSIN_FILE_LOCAL

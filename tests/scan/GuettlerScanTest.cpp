@@ -25,7 +25,7 @@
 
 using namespace rosin::scan;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 class GuettlerScan : public ::testing::Test
 {
@@ -57,7 +57,6 @@ class GuettlerScan : public ::testing::Test
     static inline std::map<std::string, double> reached_;
     static inline ScanSpec spec_; ///< the last law's (plastic)
 };
-} // namespace
 
 TEST_F(GuettlerScan, FrictionCurvesRankAsInTheSeed)
 {
@@ -152,3 +151,5 @@ TEST_F(GuettlerScan, BridgeForceClassificationAgreesWithTheStateForThePlasticLaw
     EXPECT_GE(agree, static_cast<int>(0.8 * static_cast<double>(fromState.size())));
     EXPECT_GT(reachedByForce, 0);
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -16,7 +16,7 @@
 
 namespace rosin::scan
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 TEST(RegimeAgreement, StateAndBridgeForceAgreeOverASchellengScan)
@@ -58,5 +58,5 @@ TEST(RegimeAgreement, StateAndBridgeForceAgreeOverASchellengScan)
     EXPECT_GE(agree, 90 * cells / 100);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::scan

@@ -18,7 +18,7 @@
 using namespace rosin::scan;
 namespace fs = std::filesystem;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 std::string file(const std::string& dir, const char* name)
 {
@@ -43,7 +43,6 @@ Outputs reference(const rosin::test::TempDir& tmp)
     EXPECT_TRUE(test::run(test::smallSpec(), dir, test::quietOptions(1)).complete);
     return outputs(dir);
 }
-} // namespace
 
 TEST(ScanRun, ThreadCountDoesNotChangeTheFiles)
 {
@@ -326,3 +325,5 @@ TEST(ScanRun, MergeNamesMissingShardsAndRefusesMixedSpecifications)
     }
     EXPECT_FALSE(fs::exists(dir + "/scan.csv"));
 }
+
+} // namespace ROSIN_FILE_LOCAL

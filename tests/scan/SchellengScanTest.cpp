@@ -35,7 +35,7 @@
 
 using namespace rosin::scan;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 class SchellengScan : public ::testing::Test
 {
@@ -67,7 +67,6 @@ class SchellengScan : public ::testing::Test
     static inline std::unique_ptr<rosin::test::TempDir> dir_;
     static inline nlohmann::json summary_;
 };
-} // namespace
 
 TEST_F(SchellengScan, UpperBoundaryFollowsSchellengsMaximumForce)
 {
@@ -128,3 +127,5 @@ TEST_F(SchellengScan, EveryHelmholtzCellLiesAboveTheMinimumForceOfTheModelsOwnLo
     ASSERT_GT(helmholtz, 20);
     EXPECT_GT(tightest, 1.0);
 }
+
+} // namespace ROSIN_FILE_LOCAL

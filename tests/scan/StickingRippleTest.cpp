@@ -26,7 +26,7 @@
 
 using namespace rosin;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double sampleRate = 48000.0;
 constexpr double bowSpeed = 0.05; // m/s, the Schelleng grid's (seed 001 section 3.1)
@@ -72,7 +72,6 @@ SteadyMotion analyse(const std::vector<physics::VoiceSample>& s, double periodSa
     }
     return {lab::classifyFromVoice(s, periodSamples, {first, n}).regime, hi - lo};
 }
-} // namespace
 
 TEST(StickingRipple, ExceedsTheBridgeExcursionOfSchellengsMinimumForceAndScalesWithTheCorner)
 {
@@ -98,3 +97,5 @@ TEST(StickingRipple, ExceedsTheBridgeExcursionOfSchellengsMinimumForceAndScalesW
     const auto [lo, hi] = std::minmax_element(rippleTimesBeta.begin(), rippleTimesBeta.end());
     EXPECT_LT(*hi / *lo, 2.0);
 }
+
+} // namespace ROSIN_FILE_LOCAL

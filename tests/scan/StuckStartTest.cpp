@@ -16,12 +16,11 @@
 
 using namespace rosin::scan;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 class StuckStart : public ::testing::TestWithParam<const char*>
 {
 };
-} // namespace
 
 TEST_P(StuckStart, SkippedStartsGiveTheSameFirstSlip)
 {
@@ -57,3 +56,5 @@ TEST_P(StuckStart, SkippedStartsGiveTheSameFirstSlip)
 }
 
 INSTANTIATE_TEST_SUITE_P(Laws, StuckStart, ::testing::Values("plastic", "classical"));
+
+} // namespace ROSIN_FILE_LOCAL

@@ -14,7 +14,7 @@
 using namespace rosin;
 using namespace rosin::scan;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double kP = 300.0, kBeta = 0.1, kVb = 0.2;
 constexpr std::size_t kT1 = 1000, kTrial = 24000;
@@ -49,7 +49,6 @@ std::size_t endOf(GuettlerTrialEnd rule, const std::vector<std::size_t>& flyback
     }
     return kTrial + 1; // never said
 }
-} // namespace
 
 TEST(TrialEnd, WholeTrialsRunToTheirLength)
 {
@@ -90,3 +89,5 @@ TEST(TrialEnd, StoppedFlybacksEndTheTrialAtTheCapsLatestReach)
                               kT1 + 6600);
     EXPECT_EQ(endOf(GuettlerTrialEnd::WhenDecided, slow), std::min(first + 1, gapSeen));
 }
+
+} // namespace ROSIN_FILE_LOCAL

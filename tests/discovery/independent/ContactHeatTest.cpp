@@ -15,7 +15,7 @@
 
 namespace rosin::discovery
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 HeatMaterials galluzzoMaterials()
@@ -84,5 +84,5 @@ TEST(ContactHeat, CalibrationGivesTheSeedsStaticCoefficientOnTheGalluzzoRig)
     EXPECT_NEAR(table.stresses().back() / table.stresses().front(), 0.35 / 1.2, 0.02);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::discovery

@@ -9,7 +9,7 @@
 
 namespace rosin::discovery
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 constexpr double kBeta = 0.0899;
@@ -144,5 +144,5 @@ TEST(OwnEffects, BendingLossFactorOnlyDampsHighPartials)
     EXPECT_GT(raised(40.0 * f0) / nominal(40.0 * f0), 2.5);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::discovery

@@ -14,7 +14,7 @@
 
 namespace rosin::discovery
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 struct SlipCount
@@ -142,5 +142,5 @@ TEST(IndependentTrial, ALongHoldFollowsTheParabolaToTheSlip)
     EXPECT_NEAR(slip / test::kRate / expectedTime, 1.0, 0.015);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::discovery

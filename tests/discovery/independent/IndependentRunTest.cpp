@@ -10,7 +10,7 @@
 
 namespace rosin::discovery
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 SynthPlan smallPlan(std::uint64_t seed, const std::vector<std::string>& effects = {})
@@ -108,5 +108,5 @@ TEST(IndependentRun, ChainFiltersHaveTheirAnalyticCorners)
     EXPECT_NEAR(gainAt(firstOrderHighPassBilinear, 0.5, 0.5, 4410.0), -3.01, 0.05);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::discovery

@@ -10,7 +10,7 @@
 
 namespace rosin::discovery
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 struct Ringing
@@ -123,5 +123,5 @@ TEST(WaveguideString, OnePoleMatchesTheLossTargetAtBothFitPoints)
     EXPECT_NEAR(loss.magnitude(0.0), 1.0, 1e-12);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::discovery

@@ -15,7 +15,7 @@
 
 namespace rosin::discovery
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 namespace fs = std::filesystem;
@@ -289,5 +289,5 @@ TEST_F(TrialSignalsTest, TrialFilesOutsideTheFolderAreRefused)
     EXPECT_THROW(readTrialSignals(dataset, outside), DatasetError);
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::discovery

@@ -13,7 +13,7 @@
 
 namespace rosin::discovery
 {
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 
 namespace fs = std::filesystem;
@@ -187,5 +187,5 @@ TEST_F(WavEssentialsStreamTest, OddLengthChunksKeepTheirPadByte)
     expectSamplesBack();
 }
 
-} // namespace
+} // namespace ROSIN_FILE_LOCAL
 } // namespace rosin::discovery

@@ -34,7 +34,7 @@
 using namespace rosin::physics;
 using cd = std::complex<double>;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double fs = 48000.0;
 constexpr double pi = std::numbers::pi;
@@ -161,7 +161,6 @@ BandError magnitudeError(const std::vector<cd>& spectrum, double fLo, double fHi
     e.rmsRel = std::sqrt(e.rmsRel / n);
     return e;
 }
-} // namespace
 
 TEST(BodyAdmittance, DiscreteBodyMatchesItsOwnTransferFunctionOverWholeBand)
 {
@@ -274,3 +273,5 @@ TEST(BodyAdmittance, RigidBodyHasNoAdmittance)
     EXPECT_EQ(body.name, "rigid");
     EXPECT_EQ(body.admittance(200.0), cd(0.0, 0.0));
 }
+
+} // namespace ROSIN_FILE_LOCAL

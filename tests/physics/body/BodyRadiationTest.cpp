@@ -17,7 +17,7 @@
 
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double fs = 48000.0;
 
@@ -62,7 +62,6 @@ BandPower bandPower(const BodyParameters& body, double lo, double hi)
     out.continuous /= bins;
     return out;
 }
-} // namespace
 
 // The discrete body (impulse-invariant modes, one-pole H) against the continuous formula, octave by octave:
 // within 5 % in power from 62.5 Hz to 4 kHz (the bank's own error is ~1 % to 3 kHz, BodyAdmittanceTest).
@@ -158,3 +157,5 @@ TEST(BodyRadiation, RigidBridgeInstrumentSoundsThroughItsBody)
     EXPECT_GT(largest, 0.01);
     EXPECT_LT(difference, 1e-9 * largest);
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -14,7 +14,7 @@
 
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 // Requested modal densities (reference §5.3 item 1; the violin value is the one documented in the source) and
 // frequencies safely between the highest parametric mode and the crossover.
@@ -46,7 +46,6 @@ double schellengMinimumForce(double realAdmittance)
     const double R = 1.0 / realAdmittance;
     return Z0 * Z0 * vb / (2.0 * R * beta * beta * dmu);
 }
-} // namespace
 
 TEST(BodyStatistics, MeanSpacingMatchesRequestedModalDensity)
 {
@@ -214,3 +213,5 @@ TEST(BodyFactory, ModeCountsReported)
     EXPECT_GT(celloBody().modes.size(), 70u);
     EXPECT_LT(celloBody().modes.size(), 110u);
 }
+
+} // namespace ROSIN_FILE_LOCAL

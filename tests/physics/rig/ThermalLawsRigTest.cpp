@@ -15,7 +15,7 @@
 using namespace rosin::physics;
 using namespace rosin::test::rig;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 struct Range
 {
@@ -38,7 +38,6 @@ double largestForwardSlip(const RigRun& run)
         dv = std::max(dv, s.slidingSpeed);
     return dv;
 }
-} // namespace
 
 // Seed: "stick-slip motion at about 44 Hz". Measured with the two-sided heat balance (handbook constants,
 // ThermalMaterial.h; perspex wedge, rosin coat on the rod): the first cycle from rest lasts 24.6 ms (40.7 Hz,
@@ -121,3 +120,5 @@ TEST(ViscousRig, ForwardSlippingWithAnOrderOfMagnitudeHigherSpecificHeatKnownDis
     RecordProperty("largestForwardSlip", std::to_string(dv));
     EXPECT_LT(dv, 1e-3 * CantileverLoad::rodSpeed);
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -12,7 +12,7 @@
 
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 const ThermalMaterial kMaterial = materials::rosin;
 constexpr double pi = std::numbers::pi;
@@ -21,7 +21,6 @@ double discResistance(double a)
 {
     return 8.0 / (3.0 * pi * pi * kMaterial.conductivity * a);
 }
-} // namespace
 
 TEST(ConductionKernel, GreenFunctionIntegratesToDiscMeanResistance)
 {
@@ -102,3 +101,5 @@ TEST(ConductionKernel, FirstStepWeightMatchesOneDimensionalIntegral)
         EXPECT_LT(k.firstStepWeight(), oneD); // lateral spreading only lowers the average temperature
     }
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -14,7 +14,7 @@
 
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double pi = std::numbers::pi;
 double muSteady(double v)
@@ -42,7 +42,6 @@ struct Crossing
     double c, x0, publishedT0;
 };
 const Crossing kCrossings[] = {{"bow", 0.5, 0.27, 26.2}, {"rod", 0.37, 0.35, 36.8}}; // seed 002 eqs. 12-13
-} // namespace
 
 // A prediction, not a fit: the rosin and acrylic constants are handbook values (ThermalMaterial.h). Measured
 // (48 kHz-independent, 5000 s of sliding at 1 kHz): T0 = 14.8 K (bow) and 20.4 K (rod) against the published
@@ -266,3 +265,5 @@ TEST(HeatBalance, AnUnheatedContactStaysAmbientAndAHeatedOneKeepsCooling)
     heat.commit(0.0, 0.3, 0.0);
     EXPECT_EQ(heat.temperature(), 0.0);
 }
+
+} // namespace ROSIN_FILE_LOCAL

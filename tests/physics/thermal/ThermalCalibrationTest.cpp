@@ -14,7 +14,7 @@
 
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double pi = std::numbers::pi;
 double muClassical(double v)
@@ -65,7 +65,6 @@ double slideThrough(FrictionLaw& law, double fs, double v, double Fb, double sec
     *dvOut = s.dv;
     return std::abs(s.frictionForce) / Fb;
 }
-} // namespace
 
 TEST(ThermalCalibration, YieldStressTableInvertsAnalyticSteadyMap)
 {
@@ -178,3 +177,5 @@ TEST(ThermalCalibration, SteadySlidingThroughModifiedLawReproducesSteadyFit)
                     100.0 * worst);
     }
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -17,7 +17,7 @@
 
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double pi = std::numbers::pi;
 double muClassical(double v)
@@ -45,7 +45,6 @@ void expectStaticLimit(FrictionLaw& law, double muS, double Fb)
     law.reset();
     EXPECT_NEAR(law.staticCoefficient(Fb), muS, 1e-9 * muS) << law.name();
 }
-} // namespace
 
 TEST(PlasticThermalLaw, StaticCoefficientAtAmbientFollowsAreaPerNewton)
 {
@@ -246,3 +245,5 @@ TEST(FrictionLawFactory, NamesRoundTripAndErrorsListValidNames)
             EXPECT_NE(what.find(n), std::string::npos) << what;
     }
 }
+
+} // namespace ROSIN_FILE_LOCAL

@@ -12,7 +12,7 @@
 
 using namespace rosin::physics;
 
-namespace
+namespace ROSIN_FILE_LOCAL
 {
 constexpr double pi = std::numbers::pi;
 
@@ -31,7 +31,6 @@ double chordHeat(double a, double e, double T, double v)
     }
     return sum;
 }
-} // namespace
 
 TEST(Washout, SeriesMatchTheirClosedForms)
 {
@@ -92,3 +91,5 @@ TEST(Washout, AStuckContactConductsIntoBothSolidsAlike)
         3.0 * pi * pi / 8.0 * (m.stationary.conductivity + m.moving.conductivity) * g.radius;
     EXPECT_NEAR(HeatBalance::steadyConductance(g, m, 1.0, 0.0) / expected, 1.0, 1e-9);
 }
+
+} // namespace ROSIN_FILE_LOCAL
