@@ -13,7 +13,7 @@
 #include <juce_events/juce_events.h>
 
 #include "PeerBenchmark.h"
-#include "plugin/RosinProcessor.h"
+#include "instrument/plugin/RosinProcessor.h"
 
 namespace
 {

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "PeerBenchmark.h"
-#include "physics/instrument/BowedInstrument.h"
-#include "physics/laws/FrictionLawFactory.h"
-#include "physics/voice/BowedStringVoice.h"
+#include "core/physics/instrument/BowedInstrument.h"
+#include "core/physics/laws/FrictionLawFactory.h"
+#include "core/physics/voice/BowedStringVoice.h"
 
 namespace
 {

@@ -1,11 +1,12 @@
-#include "CommandLine.h"
+#include "cli/CommandLine.h"
 
 #include <cstdio>
 
 #include <algorithm>
 #include <charconv>
 
-#include "config/ConfigError.h"
+#include "core/config/ConfigError.h"
+#include "core/config/JsonObject.h"
 
 namespace rosin::cli
 {
@@ -70,6 +71,13 @@ double parseNumber(const std::string& option, const std::string& text)
                                  const std::string& value)
 {
     throw config::ConfigError(option, "", expected, "\"" + value + "\"");
+}
+
+void requireChoice(const std::string& option, const std::string& value,
+                   const std::vector<std::string>& allowed)
+{
+    if (std::find(allowed.begin(), allowed.end(), value) == allowed.end())
+        badOptionValue(option, config::oneOfText(allowed), value);
 }
 
 std::string significant(double value, int digits)

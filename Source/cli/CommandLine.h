@@ -41,6 +41,9 @@ double parseNumber(const std::string& option, const std::string& text);
 /// Throws ConfigError: `option` got `value` where `expected` was.
 [[noreturn]] void badOptionValue(const std::string& option, const std::string& expected,
                                  const std::string& value);
+/// Throws ConfigError naming `option` unless `value` is one of `allowed`.
+void requireChoice(const std::string& option, const std::string& value,
+                   const std::vector<std::string>& allowed);
 
 /// `value` with `digits` significant digits (printf's %g), for messages and reports.
 std::string significant(double value, int digits);

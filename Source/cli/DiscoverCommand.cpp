@@ -1,4 +1,4 @@
-#include "DiscoverCommand.h"
+#include "cli/DiscoverCommand.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,16 +9,16 @@
 #include <optional>
 #include <thread>
 
-#include "CommandLine.h"
-#include "OptionTable.h"
-#include "config/AtomicFile.h"
-#include "config/ConfigError.h"
-#include "discovery/DatasetReader.h"
-#include "discovery/discover/Discovery.h"
-#include "discovery/discover/DiscoveryReport.h"
-#include "discovery/io/TrialSignals.h"
-#include "scan/ChildProcess.h"
-#include "scan/HelperScripts.h"
+#include "cli/CommandLine.h"
+#include "cli/OptionTable.h"
+#include "core/config/AtomicFile.h"
+#include "core/config/ConfigError.h"
+#include "lab/discovery/DatasetReader.h"
+#include "lab/discovery/discover/Discovery.h"
+#include "lab/discovery/discover/DiscoveryReport.h"
+#include "lab/discovery/io/TrialSignals.h"
+#include "lab/scan/ChildProcess.h"
+#include "lab/scan/HelperScripts.h"
 
 #ifndef ROSIN_DISCOVER_FIGURE_SCRIPT
 #define ROSIN_DISCOVER_FIGURE_SCRIPT ""

@@ -1,14 +1,14 @@
-#include "Dispatcher.h"
+#include "cli/Dispatcher.h"
 
 #include <cstdio>
 #include <exception>
 
-#include "CommandLine.h"
-#include "DiscoverCommand.h"
-#include "RenderCommand.h"
-#include "ScanCommand.h"
-#include "SynthDataCommand.h"
-#include "physics/modal/SimdLevel.h"
+#include "cli/CommandLine.h"
+#include "cli/DiscoverCommand.h"
+#include "cli/RenderCommand.h"
+#include "cli/ScanCommand.h"
+#include "cli/SynthDataCommand.h"
+#include "core/physics/modal/SimdLevel.h"
 
 #ifndef ROSIN_VERSION
 #define ROSIN_VERSION "unknown"

@@ -1,10 +1,10 @@
-#include "ListeningOutput.h"
+#include "cli/ListeningOutput.h"
 
 #include <numbers>
 
-#include "config/ConfigError.h"
-#include "physics/body/BodyParameters.h"
-#include "physics/voice/VoiceConfig.h"
+#include "core/config/ConfigError.h"
+#include "core/physics/body/BodyParameters.h"
+#include "core/physics/voice/VoiceConfig.h"
 
 namespace rosin::cli
 {

@@ -5,8 +5,8 @@
 // sample. On a rigid bridge the listener hears the string through the body of its instrument family.
 #include <string>
 
-#include "config/Preset.h"
-#include "physics/body/BridgeBody.h"
+#include "core/config/Preset.h"
+#include "core/physics/body/BridgeBody.h"
 
 namespace rosin::cli
 {

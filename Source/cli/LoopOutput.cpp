@@ -1,11 +1,11 @@
-#include "LoopOutput.h"
+#include "cli/LoopOutput.h"
 
 #include <filesystem>
 
-#include "CommandLine.h"
-#include "config/AtomicFile.h"
-#include "config/ConfigError.h"
-#include "scan/Figures.h"
+#include "cli/CommandLine.h"
+#include "core/config/AtomicFile.h"
+#include "core/config/ConfigError.h"
+#include "lab/scan/Figures.h"
 
 namespace rosin::cli
 {
@@ -24,7 +24,7 @@ void parseLoopInterval(const std::string& text, LoopRequest& request)
     request.to = b;
 }
 
-lab::HysteresisLoop makeLoop(const LoopRequest& request, double totalSeconds, double sampleRate)
+analysis::HysteresisLoop makeLoop(const LoopRequest& request, double totalSeconds, double sampleRate)
 {
     const double to = request.to.value_or(totalSeconds);
     const double from = request.from.value_or(std::max(0.0, totalSeconds - LoopRequest::kDefaultSeconds));
@@ -33,10 +33,10 @@ lab::HysteresisLoop makeLoop(const LoopRequest& request, double totalSeconds, do
                                   "an interval inside the gesture (0 to " + std::to_string(totalSeconds) +
                                       " s)",
                                   std::to_string(from) + ":" + std::to_string(to));
-    return lab::HysteresisLoop(from, to, sampleRate);
+    return analysis::HysteresisLoop(from, to, sampleRate);
 }
 
-void writeLoop(const lab::HysteresisLoop& loop, const LoopRequest& request, const std::string& title,
+void writeLoop(const analysis::HysteresisLoop& loop, const LoopRequest& request, const std::string& title,
                std::ostream& out, std::ostream& err)
 {
     const std::string csv = std::filesystem::path(request.figure).replace_extension(".csv").string();

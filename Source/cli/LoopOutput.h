@@ -6,7 +6,7 @@
 #include <ostream>
 #include <string>
 
-#include "lab/HysteresisLoop.h"
+#include "core/analysis/HysteresisLoop.h"
 
 namespace rosin::cli
 {
@@ -21,9 +21,9 @@ struct LoopRequest
 /// Parses "A:B" (seconds, 0 <= A < B); throws ConfigError naming --loop-interval.
 void parseLoopInterval(const std::string& text, LoopRequest& request);
 /// The recorder for a render of `totalSeconds`; throws ConfigError if the interval lies outside it.
-lab::HysteresisLoop makeLoop(const LoopRequest& request, double totalSeconds, double sampleRate);
+analysis::HysteresisLoop makeLoop(const LoopRequest& request, double totalSeconds, double sampleRate);
 /// Writes FILE.csv and draws FILE.png; reports on `out`, warns on `err` if the figure could not be drawn.
-void writeLoop(const lab::HysteresisLoop& loop, const LoopRequest& request, const std::string& title,
+void writeLoop(const analysis::HysteresisLoop& loop, const LoopRequest& request, const std::string& title,
                std::ostream& out, std::ostream& err);
 
 } // namespace rosin::cli

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "Dispatcher.h"
+#include "cli/Dispatcher.h"
 
 int main(int argc, char* argv[])
 {

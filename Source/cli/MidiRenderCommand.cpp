@@ -1,18 +1,18 @@
-#include "MidiRenderCommand.h"
+#include "cli/MidiRenderCommand.h"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <optional>
 
-#include "CommandLine.h"
-#include "ListeningOutput.h"
-#include "OptionTable.h"
-#include "RenderCommand.h"
-#include "WavWriter.h"
-#include "config/ConfigError.h"
-#include "engine/MidiInput.h"
-#include "engine/OfflineInstrument.h"
+#include "cli/CommandLine.h"
+#include "cli/ListeningOutput.h"
+#include "cli/OptionTable.h"
+#include "cli/RenderCommand.h"
+#include "cli/WavWriter.h"
+#include "core/config/ConfigError.h"
+#include "instrument/engine/MidiInput.h"
+#include "instrument/engine/OfflineInstrument.h"
 
 namespace rosin::cli
 {

@@ -1,4 +1,4 @@
-#include "OfflineRender.h"
+#include "cli/OfflineRender.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <functional>
 
-#include "gesture/BowGesture.h"
-#include "physics/voice/BowedStringVoice.h"
+#include "core/gesture/BowGesture.h"
+#include "core/physics/voice/BowedStringVoice.h"
 
 namespace rosin::cli
 {

@@ -1,4 +1,4 @@
-#include "OptionTable.h"
+#include "cli/OptionTable.h"
 
 #include <algorithm>
 

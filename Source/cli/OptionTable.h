@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "CommandLine.h"
-#include "physics/units/Range.h"
+#include "cli/CommandLine.h"
+#include "core/physics/units/Range.h"
 
 namespace rosin::cli
 {

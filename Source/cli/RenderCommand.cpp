@@ -1,4 +1,4 @@
-#include "RenderCommand.h"
+#include "cli/RenderCommand.h"
 
 #include <algorithm>
 #include <array>
@@ -8,21 +8,21 @@
 #include <filesystem>
 #include <optional>
 
-#include "CommandLine.h"
-#include "ListeningOutput.h"
-#include "LoopOutput.h"
-#include "MidiRenderCommand.h"
-#include "OfflineRender.h"
-#include "OptionTable.h"
-#include "ProbeChannels.h"
-#include "RigRender.h"
-#include "WavWriter.h"
-#include "config/GestureScriptLoader.h"
-#include "config/JsonObject.h"
-#include "config/PresetLoader.h"
-#include "config/VoiceSetup.h"
-#include "gesture/BuiltinGestures.h"
-#include "gesture/GestureLimits.h"
+#include "cli/CommandLine.h"
+#include "cli/ListeningOutput.h"
+#include "cli/LoopOutput.h"
+#include "cli/MidiRenderCommand.h"
+#include "cli/OfflineRender.h"
+#include "cli/OptionTable.h"
+#include "cli/ProbeChannels.h"
+#include "cli/RigRender.h"
+#include "cli/WavWriter.h"
+#include "core/config/GestureScriptLoader.h"
+#include "core/config/JsonObject.h"
+#include "core/config/PresetLoader.h"
+#include "core/config/VoiceSetup.h"
+#include "core/gesture/BuiltinGestures.h"
+#include "core/gesture/GestureLimits.h"
 
 namespace rosin::cli
 {
@@ -90,13 +90,6 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args)
     if (o.probe && normal(*o.probe) == normal(o.out))
         throw config::ConfigError("--probe", "", "a different file from --out", "\"" + *o.probe + "\"");
     return o;
-}
-
-void requireChoice(const std::string& option, const std::string& value,
-                   const std::vector<std::string>& allowed)
-{
-    if (std::find(allowed.begin(), allowed.end(), value) == allowed.end())
-        throw config::ConfigError(option, "", config::oneOfText(allowed), "\"" + value + "\"");
 }
 
 config::Preset choosePreset(const RenderOptions& o)
@@ -305,7 +298,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
         return renderRig(preset, setup, bow, script.totalSeconds(),
                          {gestureSpec, o.sampleRate, o.out, o.probe, o.scale, o.loop}, out, err);
 
-    std::optional<lab::HysteresisLoop> loop;
+    std::optional<analysis::HysteresisLoop> loop;
     if (o.loop)
         loop.emplace(makeLoop(*o.loop, script.totalSeconds(), o.sampleRate));
 

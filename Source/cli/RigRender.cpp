@@ -1,6 +1,6 @@
 // `rosin render` for seed 000's oscillator rig (RigRender.h).
-#include "RigRender.h"
-#include "CommandLine.h"
+#include "cli/RigRender.h"
+#include "cli/CommandLine.h"
 
 #include <algorithm>
 #include <array>
@@ -8,11 +8,11 @@
 #include <cstdio>
 #include <vector>
 
-#include "WavWriter.h"
-#include "config/AtomicFile.h"
-#include "config/ConfigError.h"
-#include "physics/rig/OscillatorRig.h"
-#include "scan/Figures.h"
+#include "cli/WavWriter.h"
+#include "core/config/AtomicFile.h"
+#include "core/config/ConfigError.h"
+#include "core/physics/rig/OscillatorRig.h"
+#include "lab/scan/Figures.h"
 
 namespace rosin::cli
 {

@@ -6,10 +6,10 @@
 #include <ostream>
 #include <string>
 
-#include "LoopOutput.h"
-#include "config/Preset.h"
-#include "config/VoiceSetup.h"
-#include "gesture/BowGesture.h"
+#include "cli/LoopOutput.h"
+#include "core/config/Preset.h"
+#include "core/config/VoiceSetup.h"
+#include "core/gesture/BowGesture.h"
 
 namespace rosin::cli
 {

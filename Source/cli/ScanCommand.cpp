@@ -1,14 +1,14 @@
-#include "ScanCommand.h"
+#include "cli/ScanCommand.h"
 
-#include "CommandLine.h"
-#include "ScanCompareCommand.h"
-#include "ScanOptions.h"
-#include "scan/Merge.h"
-#include "scan/ScanRun.h"
-#include "scan/StopSignal.h"
-#include "scan/WorkerPool.h"
+#include "cli/CommandLine.h"
+#include "cli/ScanCompareCommand.h"
+#include "cli/ScanOptions.h"
+#include "lab/scan/Merge.h"
+#include "lab/scan/ScanRun.h"
+#include "lab/scan/StopSignal.h"
+#include "lab/scan/WorkerPool.h"
 #ifdef ROSIN_WITH_MPI
-#include "scan/mpi/MpiScan.h"
+#include "lab/scan/mpi/MpiScan.h"
 #endif
 
 namespace rosin::cli

@@ -1,14 +1,14 @@
-#include "ScanCompareCommand.h"
+#include "cli/ScanCompareCommand.h"
 
 #include <filesystem>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
 
-#include "CommandLine.h"
-#include "OptionTable.h"
-#include "scan/Figures.h"
-#include "scan/ScanError.h"
+#include "cli/CommandLine.h"
+#include "cli/OptionTable.h"
+#include "lab/scan/Figures.h"
+#include "lab/scan/ScanError.h"
 
 namespace rosin::cli
 {

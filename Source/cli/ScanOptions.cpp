@@ -1,18 +1,18 @@
-#include "ScanOptions.h"
+#include "cli/ScanOptions.h"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <optional>
 
-#include "CommandLine.h"
-#include "config/ConfigError.h"
-#include "config/JsonObject.h"
-#include "config/PresetLoader.h"
-#include "config/VoiceSetup.h"
-#include "gesture/GestureLimits.h"
-#include "scan/Axis.h"
-#include "scan/Variations.h"
+#include "cli/CommandLine.h"
+#include "core/config/ConfigError.h"
+#include "core/config/JsonObject.h"
+#include "core/config/PresetLoader.h"
+#include "core/config/VoiceSetup.h"
+#include "core/gesture/GestureLimits.h"
+#include "lab/scan/Axis.h"
+#include "lab/scan/Variations.h"
 
 namespace rosin::cli
 {
@@ -121,13 +121,6 @@ scan::ShardId shard(const std::string& option, const std::string& text)
     const std::size_t n = integer(option, text.substr(slash + 1), 1, 1000000, expected, text);
     const std::size_t k = integer(option, text.substr(0, slash), 0, n - 1, expected, text);
     return {k, n};
-}
-
-void requireChoice(const std::string& option, const std::string& value,
-                   const std::vector<std::string>& allowed)
-{
-    if (std::find(allowed.begin(), allowed.end(), value) == allowed.end())
-        badOptionValue(option, config::oneOfText(allowed), value);
 }
 
 // The option values by name (the last one wins, as for `rosin render`).

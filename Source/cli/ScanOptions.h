@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "OptionTable.h"
-#include "scan/ScanRun.h"
-#include "scan/ScanSpec.h"
+#include "cli/OptionTable.h"
+#include "lab/scan/ScanRun.h"
+#include "lab/scan/ScanSpec.h"
 
 namespace rosin::cli
 {

@@ -1,4 +1,4 @@
-#include "SynthDataCommand.h"
+#include "cli/SynthDataCommand.h"
 
 #include <algorithm>
 #include <chrono>
@@ -7,18 +7,18 @@
 #include <fstream>
 #include <optional>
 
-#include "CommandLine.h"
-#include "SynthDataOptions.h"
-#include "config/AtomicFile.h"
-#include "config/ConfigError.h"
-#include "discovery/DatasetReader.h"
-#include "discovery/DatasetWriter.h"
-#include "discovery/independent/IndependentRun.h"
-#include "discovery/io/TrialSignals.h"
-#include "discovery/synth/SynthRun.h"
-#include "discovery/synth/SynthTruth.h"
-#include "gesture/GestureLimits.h"
-#include "scan/StopSignal.h"
+#include "cli/CommandLine.h"
+#include "cli/SynthDataOptions.h"
+#include "core/config/AtomicFile.h"
+#include "core/config/ConfigError.h"
+#include "core/gesture/GestureLimits.h"
+#include "lab/discovery/DatasetReader.h"
+#include "lab/discovery/DatasetWriter.h"
+#include "lab/discovery/independent/IndependentRun.h"
+#include "lab/discovery/io/TrialSignals.h"
+#include "lab/discovery/synth/SynthRun.h"
+#include "lab/discovery/synth/SynthTruth.h"
+#include "lab/scan/StopSignal.h"
 
 namespace rosin::cli
 {

@@ -1,16 +1,16 @@
-#include "SynthDataOptions.h"
+#include "cli/SynthDataOptions.h"
 
 #include <algorithm>
 #include <charconv>
 #include <limits>
 
-#include "CommandLine.h"
-#include "ScanOptions.h"
-#include "config/ConfigError.h"
-#include "config/JsonObject.h"
-#include "config/PresetLoader.h"
-#include "gesture/GestureLimits.h"
-#include "scan/ModelSpec.h"
+#include "cli/CommandLine.h"
+#include "cli/ScanOptions.h"
+#include "core/config/ConfigError.h"
+#include "core/config/JsonObject.h"
+#include "core/config/PresetLoader.h"
+#include "core/gesture/GestureLimits.h"
+#include "lab/scan/ModelSpec.h"
 
 namespace rosin::cli
 {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "OptionTable.h"
-#include "discovery/synth/SynthPlan.h"
+#include "cli/OptionTable.h"
+#include "lab/discovery/synth/SynthPlan.h"
 
 namespace rosin::cli
 {

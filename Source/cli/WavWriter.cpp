@@ -1,4 +1,4 @@
-#include "WavWriter.h"
+#include "cli/WavWriter.h"
 
 #include <stdexcept>
 

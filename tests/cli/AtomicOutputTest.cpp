@@ -2,15 +2,15 @@
 // through juce::TemporaryFile. A failed or killed run leaves the old file and no temporary behind.
 #include <gtest/gtest.h>
 
-#include "CliSupport.h"
+#include "cli/CliSupport.h"
 
 #include <filesystem>
 #include <vector>
 
 #include "cli/WavWriter.h"
-#include "config/AtomicFile.h"
-#include "config/ConfigError.h"
-#include "config/TempFiles.h"
+#include "core/config/AtomicFile.h"
+#include "core/config/ConfigError.h"
+#include "core/config/TempFiles.h"
 
 namespace ROSIN_FILE_LOCAL
 {

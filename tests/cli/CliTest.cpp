@@ -2,7 +2,7 @@
 // JUCE.
 #include <gtest/gtest.h>
 
-#include "CliSupport.h"
+#include "cli/CliSupport.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -12,10 +12,10 @@
 
 #include <juce_audio_formats/juce_audio_formats.h>
 
-#include "Dispatcher.h"
-#include "config/TempFiles.h"
-#include "physics/body/BridgeBody.h"
-#include "physics/modal/SimdLevel.h"
+#include "cli/Dispatcher.h"
+#include "core/config/TempFiles.h"
+#include "core/physics/body/BridgeBody.h"
+#include "core/physics/modal/SimdLevel.h"
 
 namespace ROSIN_FILE_LOCAL
 {

@@ -16,11 +16,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "CliSupport.h"
-#include "config/TempFiles.h"
+#include "cli/CliSupport.h"
+#include "core/config/TempFiles.h"
 
-#include "discovery/EffectCatalog.h"
-#include "discovery/SimulationModel.h"
+#include "lab/discovery/EffectCatalog.h"
+#include "lab/discovery/SimulationModel.h"
 
 namespace ROSIN_FILE_LOCAL
 {

@@ -7,8 +7,8 @@
 
 #include <juce_audio_formats/juce_audio_formats.h>
 
-#include "CliSupport.h"
-#include "config/TempFiles.h"
+#include "cli/CliSupport.h"
+#include "core/config/TempFiles.h"
 
 namespace ROSIN_FILE_LOCAL
 {

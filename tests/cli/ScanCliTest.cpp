@@ -3,7 +3,7 @@
 // script.
 #include <gtest/gtest.h>
 
-#include "CliSupport.h"
+#include "cli/CliSupport.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -13,7 +13,7 @@
 #include <sstream>
 #include <sys/wait.h>
 
-#include "config/TempFiles.h"
+#include "core/config/TempFiles.h"
 
 namespace ROSIN_FILE_LOCAL
 {

@@ -5,7 +5,7 @@
 // first-slip mu_s a laboratory would measure rises when junction growth is hidden.
 #include <gtest/gtest.h>
 
-#include "CliSupport.h"
+#include "cli/CliSupport.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -16,12 +16,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "config/TempFiles.h"
-#include "discovery/DatasetReader.h"
-#include "discovery/EffectCatalog.h"
-#include "discovery/io/TrialSignals.h"
-#include "lab/FirstSlip.h"
-#include "scan/Axis.h"
+#include "core/analysis/FirstSlip.h"
+#include "core/config/TempFiles.h"
+#include "lab/discovery/DatasetReader.h"
+#include "lab/discovery/EffectCatalog.h"
+#include "lab/discovery/io/TrialSignals.h"
+#include "lab/scan/Axis.h"
 
 namespace ROSIN_FILE_LOCAL
 {
@@ -345,14 +345,14 @@ TEST_F(SynthDataCli, FirstSlipFrictionRisesWithJunctionGrowth)
         std::vector<double> mu;
         for (const auto& t : d.trials)
         {
-            rosin::lab::FirstSlipOptions o;
+            rosin::analysis::FirstSlipOptions o;
             o.sampleRate = d.sampleRate;
             o.beta = t.beta;
             o.bowForce = t.bowForce;
             o.periodSeconds = 1.0 / d.rig.string.fundamental();
             o.highPassCutoffHz = *d.sensor.highpassHz;
             const auto first =
-                rosin::lab::firstSlipFromBridgeForce(readTrialSignals(d, t).channel("bridgeForce"), o);
+                rosin::analysis::firstSlipFromBridgeForce(readTrialSignals(d, t).channel("bridgeForce"), o);
             mu.push_back(t.valid && first.found ? first.muStatic : NAN);
         }
         return mu;

@@ -1,9 +1,9 @@
 // Automation files ("rosin-automation/1", rosin render --automation): JSON text -> validated lanes, each
 // read at a few times. Accepted lanes must give finite values.
-#include "FuzzTarget.h"
-#include "config/ConfigError.h"
-#include "config/JsonFile.h"
-#include "engine/AutomationLanes.h"
+#include "core/config/ConfigError.h"
+#include "core/config/JsonFile.h"
+#include "fuzz/FuzzTarget.h"
+#include "instrument/engine/AutomationLanes.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

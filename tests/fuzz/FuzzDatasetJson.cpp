@@ -1,7 +1,7 @@
 // Measured datasets' descriptions ("rosin-measurements/1", dataset.json): JSON text -> validated Dataset.
-#include "FuzzTarget.h"
-#include "config/JsonFile.h"
-#include "discovery/DatasetReader.h"
+#include "core/config/JsonFile.h"
+#include "fuzz/FuzzTarget.h"
+#include "lab/discovery/DatasetReader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

@@ -1,11 +1,11 @@
 // Gesture scripts ("rosin-gesture/1"): JSON text -> validated script -> the bow gesture it resolves to, read
 // for its first samples. A script the reader accepts must prepare and give finite bow inputs.
-#include "FuzzTarget.h"
-#include "config/ConfigError.h"
-#include "config/GestureScriptLoader.h"
-#include "config/JsonFile.h"
-#include "gesture/BowGesture.h"
-#include "gesture/GestureLimits.h"
+#include "core/config/ConfigError.h"
+#include "core/config/GestureScriptLoader.h"
+#include "core/config/JsonFile.h"
+#include "core/gesture/BowGesture.h"
+#include "core/gesture/GestureLimits.h"
+#include "fuzz/FuzzTarget.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

@@ -2,10 +2,10 @@
 // channel message through the bow controller of a four-string cello, which must keep its inputs finite.
 #include <juce_audio_basics/juce_audio_basics.h>
 
-#include "FuzzTarget.h"
-#include "engine/MidiInput.h"
-#include "gesture/MidiBytes.h"
-#include "gesture/MidiGestureController.h"
+#include "fuzz/FuzzTarget.h"
+#include "instrument/engine/MidiInput.h"
+#include "instrument/player/MidiBytes.h"
+#include "instrument/player/MidiGestureController.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
@@ -21,16 +21,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     }
     static const double openStrings[] = {65.41, 98.0, 146.83, 220.0};
-    gesture::MidiGestureController controller;
+    player::MidiGestureController controller;
     controller.prepare(openStrings, 4, 8000.0);
-    physics::BowInput inputs[gesture::MidiGestureController::kMaxStrings];
+    physics::BowInput inputs[player::MidiGestureController::kMaxStrings];
     const int events = std::min(sequence.getNumEvents(), 4096);
     for (int e = 0; e < events; ++e)
     {
         const juce::MidiMessage& message = sequence.getEventPointer(e)->message;
         fuzz::requireFinite(message.getTimeStamp(), "event time");
-        gesture::GestureEvent event;
-        if (gesture::decodeMidi(message.getRawData(), message.getRawDataSize(), 0, event))
+        player::GestureEvent event;
+        if (player::decodeMidi(message.getRawData(), message.getRawDataSize(), 0, event))
             controller.handleEvent(event);
         controller.next(inputs);
         for (int s = 0; s < controller.stringCount(); ++s)

@@ -1,11 +1,11 @@
 // Presets ("rosin-preset/1"): JSON text -> validated Preset -> voice configuration -> a prepared voice bowed
 // for a few milliseconds. A preset the reader accepts must build and bow to finite output.
-#include "FuzzTarget.h"
-#include "config/ConfigError.h"
-#include "config/JsonFile.h"
-#include "config/PresetLoader.h"
-#include "config/VoiceSetup.h"
-#include "physics/voice/BowedStringVoice.h"
+#include "core/config/ConfigError.h"
+#include "core/config/JsonFile.h"
+#include "core/config/PresetLoader.h"
+#include "core/config/VoiceSetup.h"
+#include "core/physics/voice/BowedStringVoice.h"
+#include "fuzz/FuzzTarget.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {

@@ -5,8 +5,8 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "FuzzTarget.h"
-#include "discovery/io/TrialSignals.h"
+#include "fuzz/FuzzTarget.h"
+#include "lab/discovery/io/TrialSignals.h"
 
 namespace
 {

@@ -23,7 +23,7 @@
 #include <juce_audio_formats/juce_audio_formats.h>
 
 #include "cli/CliSupport.h"
-#include "physics/modal/SimdLevel.h"
+#include "core/physics/modal/SimdLevel.h"
 
 namespace rosin::test
 {

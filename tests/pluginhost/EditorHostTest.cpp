@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <thread>
 
-#include "HostHarness.h"
+#include "pluginhost/HostHarness.h"
 
 using namespace rosin::pluginhost;
 

@@ -1,6 +1,6 @@
 // The host harness of the plugin-hosting tests: finding and loading the built bundles, preparing,
 // rendering with MIDI, and letting LV2 instances settle. See HostHarness.h.
-#include "HostHarness.h"
+#include "pluginhost/HostHarness.h"
 
 #include <gtest/gtest.h>
 

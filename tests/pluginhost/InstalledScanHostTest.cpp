@@ -9,7 +9,7 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "HostHarness.h"
+#include "pluginhost/HostHarness.h"
 
 using namespace rosin::pluginhost;
 

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "HostHarness.h"
-#include "XlibHostSetup.h"
+#include "pluginhost/HostHarness.h"
+#include "pluginhost/XlibHostSetup.h"
 
 using namespace rosin::pluginhost;
 

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "HostHarness.h"
+#include "pluginhost/HostHarness.h"
 
 using namespace rosin::pluginhost;
 

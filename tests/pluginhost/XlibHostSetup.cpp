@@ -1,4 +1,4 @@
-#include "XlibHostSetup.h"
+#include "pluginhost/XlibHostSetup.h"
 
 #include <X11/Xlib.h>
 #include <atomic>

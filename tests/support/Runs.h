@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "physics/voice/BowedStringVoice.h"
+#include "core/physics/voice/BowedStringVoice.h"
 
 namespace rosin::test
 {

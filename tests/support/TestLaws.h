@@ -2,7 +2,7 @@
 // Friction "laws" used only by tests: they let a test drive the linear string with a known force.
 #include <vector>
 
-#include "physics/friction/FrictionLaw.h"
+#include "core/physics/friction/FrictionLaw.h"
 
 namespace rosin::test
 {

@@ -1,0 +1,179 @@
+#include "instrument/plugin/RosinEditor.h"
+
+#include <cmath>
+
+#include "instrument/plugin/RosinProcessor.h"
+
+namespace rosin::plugin
+{
+
+namespace
+{
+constexpr int kHeaderHeight = 40;
+constexpr int kControlsHeight = 198; // two selector rows and the knobs
+constexpr int kKeyboardHeight = 60;
+constexpr int kLowestKey = 36, kHighestKey = 100; // cello C2 to the violin's E7
+const char* const kRoman[] = {"I", "II", "III", "IV", "V", "VI", "VII", "VIII"};
+} // namespace
+
+RosinEditor::RosinEditor(RosinProcessor& processor)
+    : juce::AudioProcessorEditor(processor), processor_(processor), controls_(processor.parameters()),
+      keyboard_(processor.keyboardState(), juce::MidiKeyboardComponent::horizontalKeyboard)
+{
+    addAndMakeVisible(controls_);
+    // Lanes top to bottom: string I (highest) first, as a player reads them.
+    for (int i = 0; i < kLanes; ++i)
+    {
+        lanes_[static_cast<std::size_t>(i)] = std::make_unique<StringLane>(i + 1);
+        addAndMakeVisible(*lanes_[static_cast<std::size_t>(i)]);
+    }
+    addAndMakeVisible(schelleng_);
+    keyboard_.setAvailableRange(kLowestKey, kHighestKey);
+    keyboard_.setLowestVisibleKey(kLowestKey);
+    keyboard_.setOctaveForMiddleC(4);   // MIDI 60 = C4, as the README names notes (C2 = 36)
+    keyboard_.setKeyPressBaseOctave(4); // the computer keyboard's row starts at C4
+    keyboard_.setWantsKeyboardFocus(true);
+    addAndMakeVisible(keyboard_);
+    addAndMakeVisible(loadResponse_);
+    addAndMakeVisible(clearResponse_);
+    addAndMakeVisible(responseStatus_);
+    loadResponse_.setTooltip(
+        "Load a measured body response: a WAV impulse response from bridge force (N) to sound "
+        "pressure (Pa), used for the radiated sound");
+    loadResponse_.onClick = [this] { chooseBodyResponse(); };
+    clearResponse_.onClick = [this] { processor_.bodyResponse().clear(); };
+    responseStatus_.setFont(juce::Font(12.0f));
+    setResizable(true, true);
+    setResizeLimits(780, 570, 1600, 1100);
+    setSize(kDefaultWidth, kDefaultHeight);
+    refreshReadouts();
+    startTimerHz(30);
+}
+
+RosinEditor::~RosinEditor()
+{
+    stopTimer();
+}
+
+void RosinEditor::paint(juce::Graphics& g)
+{
+    g.fillAll(getLookAndFeel().findColour(juce::ResizableWindow::backgroundColourId));
+    auto header = getLocalBounds().removeFromTop(kHeaderHeight).reduced(14, 0);
+    g.setColour(getLookAndFeel().findColour(juce::Label::textColourId));
+    g.setFont(juce::Font(24.0f, juce::Font::bold));
+    g.drawText("Rosin", header, juce::Justification::centredLeft);
+    g.setFont(juce::Font(13.0f));
+    g.setColour(getLookAndFeel().findColour(juce::Label::textColourId).withAlpha(0.6f));
+    g.drawText("physically modelled bowed string", header.withTrimmedLeft(86),
+               juce::Justification::centredLeft);
+    const auto program = processor_.getProgramName(processor_.getCurrentProgram());
+    g.drawText("program: " + program, header, juce::Justification::centredRight);
+}
+
+void RosinEditor::resized()
+{
+    auto area = getLocalBounds().reduced(10, 0);
+    area.removeFromTop(kHeaderHeight);
+    controls_.setBounds(area.removeFromTop(kControlsHeight));
+    // Beside the output choice and the quality (the controls' second row): the body response's buttons and
+    // status.
+    auto responseRow = controls_.getBounds()
+                           .withTrimmedTop(ParameterControls::kSelectorRowHeight)
+                           .withHeight(ParameterControls::kSelectorRowHeight)
+                           .withTrimmedLeft(ParameterControls::kSecondRowWidth + 10);
+    loadResponse_.setBounds(responseRow.removeFromLeft(120).reduced(0, 3));
+    clearResponse_.setBounds(responseRow.removeFromLeft(90).reduced(4, 3));
+    responseStatus_.setBounds(responseRow);
+    area.removeFromTop(8);
+    area.removeFromBottom(10);
+    keyboard_.setBounds(area.removeFromBottom(kKeyboardHeight));
+    keyboard_.setKeyWidth(static_cast<float>(area.getWidth()) / 38.5f); // 38 white keys from C2 to E7
+    area.removeFromBottom(8);
+    auto lanes = area.removeFromLeft(area.getWidth() * 57 / 100);
+    area.removeFromLeft(8);
+    schelleng_.setBounds(area);
+    const int laneHeight = lanes.getHeight() / kLanes;
+    for (auto& lane : lanes_)
+        lane->setBounds(lanes.removeFromTop(laneHeight));
+}
+
+void RosinEditor::chooseBodyResponse()
+{
+    chooser_ = std::make_unique<juce::FileChooser>("Body response (bridge force to sound pressure)",
+                                                   juce::File(), "*.wav;*.aif;*.aiff;*.flac");
+    chooser_->launchAsync(juce::FileBrowserComponent::openMode | juce::FileBrowserComponent::canSelectFiles,
+                          [this](const juce::FileChooser& chooser)
+                          {
+                              if (chooser.getResult() != juce::File())
+                                  processor_.bodyResponse().load(chooser.getResult());
+                          });
+}
+
+void RosinEditor::refreshReadouts()
+{
+    if (responseStatus_.getText() != processor_.bodyResponse().status())
+    {
+        responseStatus_.setText(processor_.bodyResponse().status(), juce::dontSendNotification);
+        responseStatus_.setTooltip(processor_.bodyResponse().status());
+    }
+    const Telemetry& telemetry = processor_.telemetry();
+    const int count =
+        juce::jlimit(0, Telemetry::kMaxStrings, telemetry.stringCount.load(std::memory_order_relaxed));
+    std::array<StringReadout, Telemetry::kMaxStrings> readouts{};
+    float strongest = 0.0f;
+    int bowed = -1;
+    for (int s = 0; s < count; ++s)
+    {
+        readouts[static_cast<std::size_t>(s)] = telemetry.strings[static_cast<std::size_t>(s)].read();
+        const auto& r = readouts[static_cast<std::size_t>(s)];
+        if (r.bowing && r.bowForce > strongest)
+            strongest = r.bowForce, bowed = s;
+    }
+    if (bowed >= 0)
+        soundingString_ = bowed;
+    if (soundingString_ >= count)
+        soundingString_ = -1;
+
+    // Lane i shows string I..IV: the telemetry counts from the lowest string.
+    for (int i = 0; i < kLanes; ++i)
+    {
+        const int s = count - 1 - i;
+        lanes_[static_cast<std::size_t>(i)]->setReadout(
+            s >= 0 ? readouts[static_cast<std::size_t>(s)] : StringReadout{}, s >= 0);
+    }
+
+    SchellengDiagram::State state;
+    const int s = soundingString_ >= 0 ? soundingString_ : count - 1;
+    auto* speed = processor_.parameters().getRawParameterValue(ids::bowSpeed);
+    auto* beta = processor_.parameters().getRawParameterValue(ids::beta);
+    auto* force = processor_.parameters().getRawParameterValue(ids::bowForce);
+    if (s >= 0)
+    {
+        const auto& r = readouts[static_cast<std::size_t>(s)];
+        state.title =
+            "string " + juce::String(kRoman[count - 1 - s]) + " (" +
+            juce::MidiMessage::getMidiNoteName(
+                static_cast<int>(std::lround(69.0 + 12.0 * std::log2(juce::jmax(1.0f, r.frequency) / 440.0))),
+                true, true, 4) +
+            ")";
+        state.impedance = r.impedance;
+        state.conductance = r.bridgeConductance;
+        state.deltaMu = SchellengDiagram::effectiveDeltaMu(r.muStatic, r.muSlip);
+        state.bowing = r.bowing;
+        state.regime = r.regime;
+        // Live bow values while bowing; the parameters' nominal ones otherwise.
+        state.bowSpeed = r.bowing ? std::abs(r.bowVelocity) : speed->load();
+        state.beta = r.bowing ? r.beta : beta->load();
+        state.force = r.bowing ? r.bowForce : force->load();
+    }
+    else
+    {
+        state.title = "(not playing)";
+        state.bowSpeed = speed->load();
+        state.beta = beta->load();
+        state.force = force->load();
+    }
+    schelleng_.setState(state);
+}
+
+} // namespace rosin::plugin
