@@ -15,3 +15,20 @@ function(rosin_test_build_options target)
         target_compile_definitions(${target} PRIVATE ROSIN_FILE_LOCAL=)
     endif()
 endfunction()
+
+# Registers a test executable's GoogleTest tests with `label`. The tests a gtest filter names in SLOW (the
+# discover runs, the grid sweeps, whole-plugin renders) get the label `<label>-slow` instead: the edit loop
+# (`ctest --preset dev`, which leaves out -L slow) then runs in about a minute, while `-L <label>`, a regular
+# expression, still selects them (a list of labels does not survive gtest_discover_tests's PROPERTIES).
+# Further arguments are test properties for all of them.
+function(rosin_discover_tests target label)
+    cmake_parse_arguments(ARG "" "SLOW" "" ${ARGN})
+    if(ARG_SLOW)
+        gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 TEST_FILTER "-${ARG_SLOW}"
+                             PROPERTIES LABELS ${label} ${ARG_UNPARSED_ARGUMENTS})
+        gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 TEST_FILTER "${ARG_SLOW}"
+                             PROPERTIES LABELS ${label}-slow ${ARG_UNPARSED_ARGUMENTS})
+    else()
+        gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS ${label} ${ARG_UNPARSED_ARGUMENTS})
+    endif()
+endfunction()
