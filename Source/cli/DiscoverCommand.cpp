@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "cli/CommandLine.h"
+#include "cli/HelpPage.h"
 #include "cli/OptionTable.h"
 #include "core/config/AtomicFile.h"
 #include "core/config/ConfigError.h"
@@ -88,11 +89,14 @@ const OptionTable& discoverOptionTable()
 }
 } // namespace
 
-std::string discoverHelp()
+HelpPage discoverHelpPage()
 {
-    return R"(usage: rosin discover DATASET --json OUT.json --report DIR [options]
-
-Compares a measured dataset (format rosin-measurements/1) with Rosin's baseline model, simulated trial by
+    HelpPage page;
+    page.command = "discover";
+    page.usage = {"rosin discover DATASET --json OUT.json --report DIR [options]"};
+    page.sections = {
+        {"",
+         R"(Compares a measured dataset (format rosin-measurements/1) with Rosin's baseline model, simulated trial by
 trial with the nominal settings through the dataset's sensor high-pass; finds where they disagree
 (features: staticFriction, jump, creep, firstSlipTime, transientPeriods, pitchCents, harmonicTilt,
 steadyLevel, the regime (a category, weighed by how often the measurement disagrees with itself), and
@@ -102,24 +106,48 @@ training half (checkerboard over the grid) and adopts the one that removes the m
 significant (paired sign-flip test at 1 %, Bonferroni over the candidates, and a gain of at least 20 %;
 a candidate close to it is cross-fitted, fitted on each half and scored on the other); at most three
 effects.
+)"},
+        {"options", "", &discoverOptionTable()},
+    };
+    page.examples = {"rosin discover gu-jg --json gu-jg.json --report gu-jg-report --threads 2"};
+    page.exitStatus = "0 success, 1 bad dataset or value, 2 usage error";
+    return page;
+}
 
-options:
-)" + discoverOptionTable().describe() +
-           R"(
-exit status: 0 success, 1 bad dataset or value, 2 usage error
-)";
+std::string discoverHelp()
+{
+    return helpText(discoverHelpPage());
+}
+
+DiscoverCommandLine parseDiscoverCommandLine(const std::vector<std::string>& args)
+{
+    DiscoverCommandLine c{std::string(), discoverOptionTable().parse({})};
+    std::vector<std::string> rest = args;
+    if (!rest.empty() && rest.front().rfind("-", 0) != 0)
+    {
+        c.folder = rest.front();
+        rest.erase(rest.begin());
+    }
+    c.options = discoverOptionTable().parse(rest);
+    if (c.options.has("--help"))
+        return c;
+    if (c.folder.empty())
+        throw UsageError("discover needs a DATASET folder");
+    if (!c.options.value("--json") || !c.options.value("--report"))
+        throw UsageError("discover needs --json FILE and --report DIR");
+    return c;
+}
+
+void checkDiscoverArguments(const std::vector<std::string>& args)
+{
+    parseDiscoverCommandLine(args);
 }
 
 int runDiscover(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
 {
-    std::vector<std::string> rest = args;
-    std::string folder;
-    if (!rest.empty() && rest.front().rfind("-", 0) != 0)
-    {
-        folder = rest.front();
-        rest.erase(rest.begin());
-    }
-    const ParsedOptions options = discoverOptionTable().parse(rest);
+    const DiscoverCommandLine c = parseDiscoverCommandLine(args);
+    const std::string& folder = c.folder;
+    const ParsedOptions& options = c.options;
     if (options.has("--help"))
     {
         out << discoverHelp();
@@ -136,10 +164,6 @@ int runDiscover(const std::vector<std::string>& args, std::ostream& out, std::os
     settings.threads = static_cast<unsigned>(
         options.number("--threads", kThreads, std::max(1u, std::thread::hardware_concurrency())));
     settings.seed = static_cast<std::uint64_t>(options.number("--seed", kSeed, 0.0));
-    if (folder.empty())
-        throw UsageError("discover needs a DATASET folder");
-    if (!json || !report)
-        throw UsageError("discover needs --json FILE and --report DIR");
 
     const discovery::Dataset dataset = discovery::readDatasetDescription(folder);
     if (!dataset.channelIndex("bridgeForce"))

@@ -4,10 +4,9 @@
 #include <exception>
 
 #include "cli/CommandLine.h"
-#include "cli/DiscoverCommand.h"
-#include "cli/RenderCommand.h"
-#include "cli/ScanCommand.h"
-#include "cli/SynthDataCommand.h"
+#include "cli/Commands.h"
+#include "cli/ManPage.h"
+#include "cli/ShellCompletion.h"
 #include "core/physics/modal/SimdLevel.h"
 
 #ifndef ROSIN_VERSION
@@ -19,46 +18,43 @@ namespace rosin::cli
 
 namespace
 {
-struct Command
+/// `rosin --parse-only COMMAND ...`: the command's parser on the arguments, nothing run.
+int parseOnly(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
 {
-    const char* name;
-    const char* summary;
-    int (*run)(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
-    std::string (*help)();
-};
-
-// One entry (and one file) per subcommand.
-const Command kCommands[] = {
-    {"render", "render a bow gesture to a WAV of the bridge force (and a probe of internal channels)",
-     runRender, renderHelp},
-    {"scan", "Schelleng and Guettler playability diagrams over a grid of bowings (all cores, resumable)",
-     runScan, scanHelp},
-    {"synth-data",
-     "a measured-like dataset from the model with physical effects hidden (discovery test data)",
-     runSynthData, synthDataHelp},
-    {"discover", "where a measured dataset and the model disagree, and which physical effect is missing",
-     runDiscover, discoverHelp},
-};
-
-const Command* findCommand(const std::string& name)
-{
-    for (const auto& c : kCommands)
-        if (name == c.name)
-            return &c;
-    return nullptr;
+    const Command* command = args.empty() ? nullptr : findCommand(args.front());
+    if (command == nullptr)
+    {
+        err << "error: --parse-only: expected a command ("
+            << (args.empty() ? "none" : "\"" + args.front() + "\"") << " given)\n";
+        return kExitUsageError;
+    }
+    try
+    {
+        command->check({args.begin() + 1, args.end()});
+    }
+    catch (const std::exception& e)
+    {
+        err << "error: " << e.what() << "\nsee 'rosin " << command->name << " --help'\n";
+        return kExitUsageError;
+    }
+    out << "rosin " << command->name << ": the options are accepted\n";
+    return kExitOk;
 }
 } // namespace
 
 std::string usage()
 {
-    std::string text = "rosin " ROSIN_VERSION " - physically modelled bowed string\n"
-                       "\n"
-                       "usage: rosin COMMAND [options]\n"
-                       "       rosin COMMAND --help     options of one command\n"
-                       "       rosin --help | --version\n"
-                       "\n"
-                       "commands:\n";
-    for (const auto& c : kCommands)
+    std::string text =
+        "rosin " ROSIN_VERSION " - physically modelled bowed string\n"
+        "\n"
+        "usage: rosin COMMAND [options]\n"
+        "       rosin COMMAND --help     options of one command\n"
+        "       rosin --help | --version\n"
+        "       rosin --man | --completion bash  the man page, the bash completion script\n"
+        "       rosin --parse-only COMMAND [options]  check a command line without running it\n"
+        "\n"
+        "commands:\n";
+    for (const Command& c : commands())
     {
         char line[200];
         std::snprintf(line, sizeof(line), "  %-10s %s\n", c.name, c.summary);
@@ -83,9 +79,26 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     if (first == "--help" || first == "-h" || first == "help")
     {
         const Command* c = args.size() > 1 ? findCommand(args[1]) : nullptr;
-        out << (c != nullptr ? c->help() : usage());
+        out << (c != nullptr ? helpText(c->page()) : usage());
         return kExitOk;
     }
+    if (first == "--man")
+    {
+        out << manPage(ROSIN_VERSION);
+        return kExitOk;
+    }
+    if (first == "--completion")
+    {
+        if (args.size() != 2 || args[1] != "bash")
+        {
+            err << "error: --completion: expected \"bash\"\n";
+            return kExitUsageError;
+        }
+        out << bashCompletion();
+        return kExitOk;
+    }
+    if (first == "--parse-only")
+        return parseOnly({args.begin() + 1, args.end()}, out, err);
     if (first == "--version")
     {
         // The vector path the kernels run on: results round differently per path (README "Tests").

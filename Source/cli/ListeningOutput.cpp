@@ -9,14 +9,18 @@
 namespace rosin::cli
 {
 
+const std::vector<std::string>& outputQuantityNames()
+{
+    static const std::vector<std::string> names = {"radiated", "force", "velocity"};
+    return names;
+}
+
 OutputQuantity outputQuantityFromName(const std::string& name)
 {
-    if (name == "radiated")
-        return OutputQuantity::Radiated;
-    if (name == "force")
-        return OutputQuantity::Force;
-    if (name == "velocity")
-        return OutputQuantity::Velocity;
+    const auto& names = outputQuantityNames();
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (name == names[i])
+            return static_cast<OutputQuantity>(i);
     throw config::ConfigError("--output", "", "radiated, force or velocity", "\"" + name + "\"");
 }
 

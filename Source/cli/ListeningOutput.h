@@ -4,6 +4,7 @@
 // voice's bridge force: the body is linear, so its state equals the one coupled to the string sample for
 // sample. On a rigid bridge the listener hears the string through the body of its instrument family.
 #include <string>
+#include <vector>
 
 #include "core/config/Preset.h"
 #include "core/physics/body/BridgeBody.h"
@@ -18,7 +19,9 @@ enum class OutputQuantity
     Velocity
 };
 
-/// "radiated", "force" or "velocity"; throws config::ConfigError naming --output otherwise.
+/// "radiated", "force", "velocity": the --output choices, in OutputQuantity's order.
+const std::vector<std::string>& outputQuantityNames();
+/// One of outputQuantityNames(); throws config::ConfigError naming --output otherwise.
 OutputQuantity outputQuantityFromName(const std::string& name);
 
 class ListeningOutput

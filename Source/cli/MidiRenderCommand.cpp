@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "cli/CommandLine.h"
+#include "cli/HelpPage.h"
 #include "cli/ListeningOutput.h"
 #include "cli/OptionTable.h"
 #include "cli/RenderCommand.h"
@@ -138,19 +139,26 @@ bool isMidiRender(const std::vector<std::string>& args)
     return false;
 }
 
-std::string midiRenderHelp()
+std::string midiRenderUsage()
 {
-    return "usage: rosin render --midi FILE.mid [--preset NAME] [--automation FILE.json] [--out FILE.wav]\n"
-           "                    [--output radiated|force|velocity] [--dc-blocker on|off] [--body-response "
-           "FILE]\n"
-           "                    [--quality full|live] [--sample-rate HZ] [--block-size N] [--tail SECONDS]\n"
-           "\n"
-           "Plays a MIDI file through the instrument's engine, as the plugin plays it (the cello or violin "
-           "of the\n"
-           "preset, the gesture controller, the output level), and writes what the plugin would output, "
-           "mono\n"
-           "32-bit float.\n" +
-           midiOptionTable().describe();
+    return "rosin render --midi FILE.mid [--preset NAME] [--automation FILE.json] [--out FILE.wav] "
+           "[--output radiated|force|velocity] [--dc-blocker on|off] [--body-response FILE] "
+           "[--quality full|live] [--sample-rate HZ] [--block-size N] [--tail SECONDS]";
+}
+
+HelpSection midiRenderSection()
+{
+    return {
+        "with --midi",
+        "Plays a MIDI file through the instrument's engine, as the plugin plays it (the cello or violin of "
+        "the\npreset, the gesture controller, the output level), and writes what the plugin would output, "
+        "mono\n32-bit float.\n",
+        &midiOptionTable()};
+}
+
+void checkMidiRenderArguments(const std::vector<std::string>& args)
+{
+    parseMidiOptions(args);
 }
 
 namespace

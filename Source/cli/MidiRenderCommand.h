@@ -6,13 +6,18 @@
 #include <string>
 #include <vector>
 
+#include "cli/HelpPage.h"
+
 namespace rosin::cli
 {
 
 /// True if the arguments select the MIDI path (a --midi option).
 bool isMidiRender(const std::vector<std::string>& args);
-/// The --help section for the MIDI path.
-std::string midiRenderHelp();
+/// The MIDI path's usage form and its section of `rosin render --help`.
+std::string midiRenderUsage();
+HelpSection midiRenderSection();
+/// Parses the MIDI path's arguments without running it; throws as runMidiRender.
+void checkMidiRenderArguments(const std::vector<std::string>& args);
 /// Runs it; errors as for runRender (UsageError, ConfigError, std::exception).
 int runMidiRender(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 

@@ -54,6 +54,8 @@ class OptionTable
     std::string describe() const;
     /// The long names of the options that take a value.
     std::vector<std::string> valueOptions() const;
+    /// The rows as declared, for the man page and the shell completion.
+    const std::vector<OptionSpec>& rows() const noexcept { return rows_; }
 
   private:
     std::vector<OptionSpec> rows_;

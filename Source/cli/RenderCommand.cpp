@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "cli/CommandLine.h"
+#include "cli/HelpPage.h"
 #include "cli/ListeningOutput.h"
 #include "cli/LoopOutput.h"
 #include "cli/MidiRenderCommand.h"
@@ -183,10 +184,11 @@ std::string presetHelp()
     std::string available =
         wrap("available: " + (presets.empty() ? std::string("none found") : presets), 0, 79);
     available.pop_back(); // wrap() ends with a newline
-    return "instrument preset (see Resources/docs/presets.md); a NAME is looked up in\n" +
-           config::presetDirectory() + " (environment ROSIN_PRESET_DIR overrides)\n" + available +
-           "\ndefault: open cello D3 of the seed's Galluzzo rig, cello body,\nplastic friction, Galluzzo "
-           "contact, beta 0.0899";
+    return "instrument preset (the manual's presets page): a NAME is one of the presets beside\n"
+           "rosin (share/rosin/presets; the environment's ROSIN_PRESET_DIR overrides)\n" +
+           available +
+           "\ndefault: the open cello D3 of the Galluzzo rig [Galluzzo2017], cello body,\nplastic friction, "
+           "Galluzzo contact, beta 0.0899";
 }
 
 std::string gestureHelp()
@@ -196,7 +198,7 @@ std::string gestureHelp()
     return "the bow gesture (default: steady). Built-in gestures:\n" + builtins +
            "\nor a JSON gesture script (\"format\": \"rosin-gesture/1\") of timed segments\nof force, speed "
            "or "
-           "acceleration, beta and finger, each constant or a ramp;\nsee Resources/docs/gesture-script.md. "
+           "acceleration, beta and finger, each constant or a ramp;\nsee the manual's gesture-script page. "
            "Absent values in a script's first segment:\nforce 1 N, speed 0 (bow at rest), the preset's beta, "
            "finger 1.";
 }
@@ -236,34 +238,46 @@ const OptionTable& renderOptionTable()
     return table;
 }
 
+HelpPage renderHelpPage()
+{
+    HelpPage page;
+    page.command = "render";
+    page.usage = {
+        "rosin render [--gesture SPEC|FILE.json] [--out FILE.wav] [--output WHAT] [--probe FILE.wav] "
+        "[--preset NAME|FILE.json] [--friction LAW] [--body BODY] [--sample-rate HZ] [--scale S] "
+        "[--loop FILE.png [--loop-interval A:B]]",
+        midiRenderUsage()};
+    page.sections = {
+        {"",
+         "Drives one bowed-string voice with a bow gesture and writes what a listener hears (or the lab's "
+         "bridge\nforce or velocity).\n"},
+        {"options", "", &renderOptionTable()},
+        {"", "valid ranges: beta 0.01..0.5, force 0..20 N, speed -5..5 m/s, acceleration -50..50 m/s^2,\n"
+             "finger 0.1..1 (vibrating / open length), seconds > 0 and <= 600 per segment and in total.\n"},
+        {"", rigRenderHelp()},
+        midiRenderSection(),
+    };
+    page.examples = {
+        "rosin render --gesture guettler:acceleration=1.56,force=0.84 --out g.wav --probe g-probe.wav",
+        "rosin render --preset schumacher-rig --gesture steady:speed=0.1,force=1.18,beta=0.127",
+        "rosin render --preset cello-classical --body rigid --gesture my-gesture.json",
+        "rosin render --midi Resources/demo/phrase.mid --out demo.wav",
+    };
+    page.exitStatus = "0 success, 1 bad value, file or preset, 2 unknown option or missing value";
+    return page;
+}
+
 std::string renderHelp()
 {
-    return "usage: rosin render [--gesture SPEC|FILE.json] [--out FILE.wav] [--output WHAT] [--probe "
-           "FILE.wav]\n"
-           "                    [--preset NAME|FILE.json] [--friction LAW] [--body BODY]\n"
-           "                    [--sample-rate HZ] [--scale S] [--loop FILE.png [--loop-interval A:B]]\n"
-           "\n"
-           "Drives one bowed-string voice with a bow gesture and writes what a listener hears (or the lab's "
-           "bridge\n"
-           "force or velocity).\n"
-           "\n"
-           "options:\n" +
-           renderOptionTable().describe() +
-           "\n"
-           "valid ranges: beta 0.01..0.5, force 0..20 N, speed -5..5 m/s, acceleration -50..50 m/s^2,\n"
-           "finger 0.1..1 (vibrating / open length), seconds > 0 and <= 600 per segment and in total.\n"
-           "\n"
-           "examples:\n"
-           "  rosin render --gesture guettler:acceleration=1.56,force=0.84 --out g.wav --probe g-probe.wav\n"
-           "  rosin render --preset schumacher-rig --gesture steady:speed=0.1,force=1.18,beta=0.127\n"
-           "  rosin render --preset cello-classical --body rigid --gesture my-gesture.json\n"
-           "\n"
-           "\n" +
-           rigRenderHelp() +
-           "\n"
-           "exit status: 0 success, 1 bad value, file or preset, 2 unknown option or missing value\n"
-           "\n" +
-           midiRenderHelp();
+    return helpText(renderHelpPage());
+}
+
+void checkRenderArguments(const std::vector<std::string>& args)
+{
+    if (isMidiRender(args))
+        checkMidiRenderArguments(args);
+    else
+        parseRenderOptions(args);
 }
 
 int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)

@@ -1,6 +1,7 @@
 #include "cli/ScanCommand.h"
 
 #include "cli/CommandLine.h"
+#include "cli/HelpPage.h"
 #include "cli/ScanCompareCommand.h"
 #include "cli/ScanOptions.h"
 #include "lab/scan/Merge.h"
@@ -54,14 +55,17 @@ int runMpi([[maybe_unused]] const ScanCommandLine& c, [[maybe_unused]] std::ostr
 }
 } // namespace
 
-std::string scanHelp()
+HelpPage scanHelpPage()
 {
-    return R"(usage: rosin scan schelleng [options] --out DIR
-       rosin scan guettler  [options] --out DIR
-       rosin scan merge DIR [--no-figures]
-       rosin scan compare A B --out DIR     the difference of two scans (DIR/compare.png)
-
-Playability diagrams of one bowed string (seed 001 sections 3.1-3.3), one simulated trial per grid cell:
+    HelpPage page;
+    page.command = "scan";
+    page.usage = {"rosin scan schelleng [options] --out DIR", "rosin scan guettler [options] --out DIR",
+                  "rosin scan merge DIR [--no-figures]", "rosin scan compare A B --out DIR"};
+    page.subcommands = {"schelleng", "guettler", "merge", "compare"};
+    page.sections = {
+        {"",
+         R"(Playability diagrams of one bowed string ([Galluzzo2017] sections 3.1-3.3), one simulated trial per
+grid cell:
   schelleng  steady bowing at one speed over (beta, force), both log-spaced; the regime at the end of each
              trial (Helmholtz, S-motion, double/multiple slipping, raucous, ALF, constant slipping, no slip).
              The bow reaches its speed with constant acceleration over --ramp, then holds it.
@@ -69,24 +73,41 @@ Playability diagrams of one bowed string (seed 001 sections 3.1-3.3), one simula
              linearly spaced, at each beta: periods from the first slip to lasting Helmholtz motion
              (judged over the first 40 periods; empty = not within 20), mu_s and the jump at the first
              slip, the failure type, and the regime at the end.
+  merge      joins the shards of a scan split with --shard into its files.
+  compare    draws the difference of two finished scans of one kind and grid (DIR/compare.png).
 Writes DIR/scan.csv (one row per cell), DIR/scan.json (summary: Helmholtz share, fitted Schelleng
 boundaries, theory lines) and the figures of Source/lab/figures/plot_scan.py (python3 with matplotlib);
-see Resources/docs/scan-format.md.
-
-)" + scanOptionTable().describe() +
-           R"(
-A run appends every finished cell to DIR/scan.partial.csv; after Ctrl-C (or SIGTERM) the running cells
+see the manual's scan-format page.
+)"},
+        {"", "", &scanOptionTable()},
+        {"compare", "", &scanCompareOptionTable()},
+        {"",
+         R"(A run appends every finished cell to DIR/scan.partial.csv; after Ctrl-C (or SIGTERM) the running cells
 finish, and the same command resumes without recomputing them. The files are byte-identical however the
 work is split (threads, resume, shards, MPI). A partial file of a different scan is refused.
+)"},
+    };
+    page.examples = {
+        "rosin scan schelleng --friction classical --out schelleng-classical",
+        "rosin scan guettler --friction plastic --beta 0.0899 --grid 20 --out guettler-plastic",
+        "rosin scan guettler --beta 0.0899 --grid 300 --shard 3/16 --out big && rosin scan merge big",
+        "mpirun -np 4 rosin scan guettler --mpi --threads 2 --out guettler-all",
+    };
+    page.exitStatus = "0 success, 1 bad value, preset or folder, 2 usage error, 128+signal when stopped";
+    return page;
+}
 
-examples:
-  rosin scan schelleng --friction classical --out schelleng-classical
-  rosin scan guettler --friction plastic --beta 0.0899 --grid 20 --out guettler-plastic
-  rosin scan guettler --beta 0.0899 --grid 300 --shard 3/16 --out big && rosin scan merge big
-  mpirun -np 4 rosin scan guettler --mpi --threads 2 --out guettler-all
+std::string scanHelp()
+{
+    return helpText(scanHelpPage());
+}
 
-exit status: 0 success, 1 bad value, preset or folder, 2 usage error, 128+signal when stopped
-)";
+void checkScanArguments(const std::vector<std::string>& args)
+{
+    if (!args.empty() && args.front() == "compare")
+        parseScanCompare({args.begin() + 1, args.end()});
+    else
+        parseScanCommandLine(args);
 }
 
 int runScan(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)

@@ -6,11 +6,17 @@
 #include <string>
 #include <vector>
 
+#include "cli/HelpPage.h"
+
 namespace rosin::cli
 {
 
+/// The manual of `rosin scan` (its --help text and its section of the man page).
+HelpPage scanHelpPage();
 /// The full `rosin scan --help` text.
 std::string scanHelp();
+/// Parses the arguments after "scan" as the command would, without running it; throws as runScan.
+void checkScanArguments(const std::vector<std::string>& args);
 /// Runs the subcommand with the arguments after "scan" (see Dispatcher.h for the error handling).
 int runScan(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 

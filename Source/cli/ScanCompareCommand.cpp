@@ -47,17 +47,31 @@ double helmholtzShare(const nlohmann::json& summary, const fs::path& dir)
 }
 } // namespace
 
-int runScanCompare(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+const OptionTable& scanCompareOptionTable()
 {
-    std::vector<std::string> folders;
+    static const OptionTable table(
+        {{"--out", "DIR", "the folder of the difference figure (DIR/compare.png)"}});
+    return table;
+}
+
+ScanComparison parseScanCompare(const std::vector<std::string>& args)
+{
+    ScanComparison c;
     std::vector<std::string> options;
     for (const auto& a : args)
-        (a.rfind("--", 0) == 0 || !options.empty() ? options : folders).push_back(a);
-    const ParsedOptions parsed =
-        OptionTable({{"--out", "DIR", "the folder of the difference figure"}}).parse(options);
-    const std::string outDir = parsed.value("--out") ? *parsed.value("--out") : "";
-    if (folders.size() != 2 || outDir.empty())
+        (a.rfind("--", 0) == 0 || !options.empty() ? options : c.folders).push_back(a);
+    const ParsedOptions parsed = scanCompareOptionTable().parse(options);
+    c.out = parsed.value("--out") ? *parsed.value("--out") : "";
+    if (c.folders.size() != 2 || c.out.empty())
         throw UsageError("usage: rosin scan compare A B --out DIR (A and B: folders of two finished scans)");
+    return c;
+}
+
+int runScanCompare(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+{
+    const ScanComparison c = parseScanCompare(args);
+    const std::vector<std::string>& folders = c.folders;
+    const std::string& outDir = c.out;
     const nlohmann::json a = readSummary(folders[0]), b = readSummary(folders[1]);
     if (a.value("kind", "") != b.value("kind", ""))
         throw scan::ScanError("cannot compare " + folders[0] + " (" + a.value("kind", "?") + ") with " +

@@ -6,8 +6,21 @@
 #include <string>
 #include <vector>
 
+#include "cli/OptionTable.h"
+
 namespace rosin::cli
 {
+
+struct ScanComparison
+{
+    std::vector<std::string> folders; ///< the two finished scans
+    std::string out;                  ///< the folder of the figure
+};
+
+/// The options of `rosin scan compare` (for its help, the man page and the completion).
+const OptionTable& scanCompareOptionTable();
+/// args after "compare", parsed; UsageError unless two folders and --out are given.
+ScanComparison parseScanCompare(const std::vector<std::string>& args);
 
 /// args after "compare". Returns the exit status; throws UsageError / scan::ScanError on bad input.
 int runScanCompare(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "cli/CommandLine.h"
+#include "cli/HelpPage.h"
 #include "cli/SynthDataOptions.h"
 #include "core/config/AtomicFile.h"
 #include "core/config/ConfigError.h"
@@ -181,34 +182,52 @@ std::string effectCatalogHelp()
 }
 } // namespace
 
-std::string synthDataHelp()
+HelpPage synthDataHelpPage()
 {
-    return R"(usage: rosin synth-data --effect NAME|none [--effect NAME2 ...] --scan guettler|schelleng
-                        [grid options] [--preset NAME] [--sample-rate HZ] [--channels basic|all]
-                        [--generator rosin|independent] --seed S --out DIR [--truth FILE]
-
-Writes a measured-like dataset (format rosin-measurements/1, shared/spec/measurements.md) from Rosin's
-model with physical effects hidden, through a laboratory's measurement chain: a first-order 0.5 Hz sensor
-high-pass on the force channels (seed 001), white noise of about 0.3 % of the typical peak bridge force,
-a 1.5 % (rms) trial-to-trial scatter of the actual bow force and acceleration (or speed) while
+    static const std::string effects =
+        effectCatalogHelp() + "  none                 no hidden effect (the baseline model)\n";
+    HelpPage page;
+    page.command = "synth-data";
+    page.usage = {
+        "rosin synth-data --effect NAME|none [--effect NAME2 ...] --scan guettler|schelleng [grid options] "
+        "[--preset NAME] [--sample-rate HZ] [--channels basic|all] [--generator rosin|independent] "
+        "--seed S --out DIR [--truth FILE]"};
+    page.sections = {
+        {"",
+         R"(Writes a measured-like dataset (format rosin-measurements/1, the manual's measurements page) from
+Rosin's model with physical effects hidden, through a laboratory's measurement chain: a first-order 0.5 Hz
+sensor high-pass on the force channels ([Galluzzo2017]), white noise of about 0.3 % of the typical peak
+bridge force, a 1.5 % (rms) trial-to-trial scatter of the actual bow force and acceleration (or speed) while
 dataset.json records the nominal settings, and about 2.5 % failed trials (at least one from 20 trials on),
 marked "valid": false, whose files are cut short or have a dropout. The dataset records only what a
 laboratory would record; the hidden effects and their values are printed, and written to --truth FILE.
+)"},
+        {"effects (NAME, or NAME:PARAMETER=VALUE,... to fix a value instead of drawing it from the source "
+         "texts)",
+         effects},
+        {"", "", &synthDataOptionTable()},
+    };
+    page.examples = {
+        "rosin synth-data --effect junction-growth --scan guettler --grid 8 --seed 1 --out gu-jg --truth "
+        "gu-jg.json",
+        "rosin synth-data --effect sticking-creep:creepResistance=60 --effect hertz-contact --scan guettler "
+        "\\\n"
+        "                 --beta 0.0899,0.1428 --seed 7 --out gu-two",
+        "rosin synth-data --effect none --scan schelleng --grid 8 --seed 3 --out sch-none",
+    };
+    page.exitStatus =
+        "0 success, 1 bad value, preset or folder, 2 usage error, 128+signal when stopped (nothing kept)";
+    return page;
+}
 
-effects (NAME, or NAME:PARAMETER=VALUE,... to fix a value instead of drawing it from the seed):
-)" + effectCatalogHelp() +
-           R"(  none                 no hidden effect (the baseline model)
+std::string synthDataHelp()
+{
+    return helpText(synthDataHelpPage());
+}
 
-)" + synthDataOptionTable().describe() +
-           R"(
-examples:
-  rosin synth-data --effect junction-growth --scan guettler --grid 8 --seed 1 --out gu-jg --truth gu-jg.json
-  rosin synth-data --effect sticking-creep:creepResistance=60 --effect hertz-contact --scan guettler \
-                   --beta 0.0899,0.1428 --seed 7 --out gu-two
-  rosin synth-data --effect none --scan schelleng --grid 8 --seed 3 --out sch-none
-
-exit status: 0 success, 1 bad value, preset or folder, 2 usage error, 128+signal when stopped (nothing kept)
-)";
+void checkSynthDataArguments(const std::vector<std::string>& args)
+{
+    parseSynthDataCommandLine(args);
 }
 
 int runSynthData(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)

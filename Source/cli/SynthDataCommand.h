@@ -8,11 +8,17 @@
 #include <string>
 #include <vector>
 
+#include "cli/HelpPage.h"
+
 namespace rosin::cli
 {
 
 /// The full `rosin synth-data --help` text (the effect catalog included).
 std::string synthDataHelp();
+/// The manual of `rosin synth-data` (its --help text and its section of the man page).
+HelpPage synthDataHelpPage();
+/// Parses the arguments after "synth-data" as the command would, without running it; throws as runSynthData.
+void checkSynthDataArguments(const std::vector<std::string>& args);
 /// Runs the subcommand with the arguments after "synth-data" (see Dispatcher.h for the error handling).
 int runSynthData(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Rosin installed as a Linux audio plugin (issue 20), checked from the installed tree only.
+"""Rosin installed as a Linux audio plugin, checked from the installed tree only.
 
 Default mode (CTest `install.destdir`): `cmake --install` into a DESTDIR under /usr, then
   - the layout hosts and desktops expect (VST3, LV2, the Standalone, rosin, data, desktop entry, icons);
@@ -35,6 +35,8 @@ EXPECTED = [
     "usr/share/rosin/figures/plot_discovery.py",
     "usr/share/rosin/demo/phrase.mid",
     "usr/share/doc/rosin/README.md",
+    "usr/share/man/man1/rosin.1.gz",
+    "usr/share/bash-completion/completions/rosin",
 ]
 # Loaded with dlopen (JUCE's X11 layer) or run (the figure scripts): invisible to dpkg-shlibdeps.
 RUNTIME_DEPENDS = ["libx11-6", "libxext6", "libxcursor1", "libxinerama1", "libxrandr2", "libxrender1",
@@ -44,7 +46,8 @@ LINKED_BINARIES = ["usr/bin/rosin", "usr/bin/rosin-standalone",
                    "usr/lib/lv2/Rosin.lv2/libRosin.so"]
 # Folders a removal must leave as they were (the package owns files only under /usr).
 WATCHED = ["/usr/bin", "/usr/lib/vst3", "/usr/lib/lv2", "/usr/share/rosin", "/usr/share/doc/rosin",
-           "/usr/share/applications", "/usr/share/icons/hicolor", "/etc", "/opt"]
+           "/usr/share/applications", "/usr/share/icons/hicolor", "/usr/share/man/man1",
+           "/usr/share/bash-completion", "/etc", "/opt"]
 
 failures = []
 
@@ -103,8 +106,11 @@ def is_wav(path):
 def rosin_checks(prefix, workdir, mark_figure_script):
     rosin = os.path.join(prefix, "bin/rosin")
     share = os.path.join(prefix, "share/rosin")
-    help_text = run([rosin, "render", "--help"], cwd=workdir, env=clean_env()).stdout
-    check(os.path.join(share, "presets") in help_text, "installed rosin looks up presets in " + share + "/presets")
+    # A name it does not know: the message names the file it looked for, in the installed presets.
+    refused = run([rosin, "render", "--preset", "no-such-preset", "--out", os.path.join(workdir, "never.wav")],
+                  cwd=workdir, env=clean_env()).stdout
+    check(os.path.join(share, "presets", "no-such-preset.json") in refused,
+          "installed rosin looks up presets in " + share + "/presets")
     demo = run([rosin, "render", "--midi", os.path.join(share, "demo/phrase.mid"), "--out", "demo.wav"],
                cwd=workdir, env=clean_env())
     check(demo.returncode == 0 and is_wav(os.path.join(workdir, "demo.wav")), "renders the demo phrase: " +
@@ -187,6 +193,23 @@ def snapshot():
     return files
 
 
+def manual_checks():
+    """`man rosin` finds the installed page and sets it without warnings; the completion offers commands."""
+    if shutil.which("man"):
+        where = run(["man", "-w", "rosin"])
+        check(where.stdout.strip() == "/usr/share/man/man1/rosin.1.gz", "man -w rosin: " + where.stdout.strip())
+        page = run(["man", "--warnings", "rosin"], env=clean_env(MANPAGER="cat", MANWIDTH="100", LANG="C.UTF-8"))
+        check(page.returncode == 0 and "rosin render" in page.stdout and "--parse-only" in page.stdout
+              and "warning" not in page.stdout, "man rosin shows the commands without warnings")
+    else:
+        check(False, "man is installed (man-db, .ci/install-deps)")
+    script = "source /usr/share/bash-completion/completions/rosin; COMP_WORDS=(rosin sc); COMP_CWORD=1; " \
+             "_rosin; echo ${COMPREPLY[*]}"
+    done = run(["bash", "-c", script])
+    check(done.stdout.strip() == "scan", "the installed bash completion completes 'rosin sc' to scan: "
+          + done.stdout.strip())
+
+
 def system_install(deb, pluginhost, workdir):
     if run(["dpkg-query", "-W", "-f=${Status}", "rosin"]).stdout.startswith("install ok"):
         check(False, "a rosin package is already installed here: not touching it")
@@ -201,6 +224,7 @@ def system_install(deb, pluginhost, workdir):
         system_run = os.path.join(workdir, "system-run")
         os.makedirs(system_run)
         rosin_checks("/usr", system_run, mark_figure_script=False)
+        manual_checks()
     finally:
         removed = run(["dpkg", "--remove", "rosin"])  # what `apt remove` does; the package has no conffiles
         check(removed.returncode == 0, "dpkg --remove rosin")
