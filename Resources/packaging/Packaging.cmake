@@ -1,4 +1,4 @@
-# The Debian package (README "Install": `cpack --config build/CPackConfig.cmake`): everything `cmake --install`
+# The Debian package (Resources/docs/building.md, "Install": `cpack --config build/CPackConfig.cmake`): everything `cmake --install`
 # puts in place, under /usr. Its Depends come from the libraries the binaries actually link (dpkg-shlibdeps),
 # plus what is loaded at run time and so invisible to it: the X11 libraries JUCE opens with dlopen for the
 # editor and the Standalone (juce_linux_X11_Symbols.h), and Python with matplotlib and NumPy for the figures.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The README's output figure: the spectrum of one sustained note as the plugin sends it (radiated sound)
+"""The output figure of Resources/docs/playing.md: the spectrum of one sustained note as the plugin sends it (radiated sound)
 against the bridge force it comes from.
 
 usage: output_spectrum.py RADIATED.wav FORCE.wav OUT.png --f0 HZ [--from S] [--to S] [--title TEXT]

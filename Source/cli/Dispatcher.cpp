@@ -101,7 +101,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         return parseOnly({args.begin() + 1, args.end()}, out, err);
     if (first == "--version")
     {
-        // The vector path the kernels run on: results round differently per path (README "Tests").
+        // The vector path the kernels run on: results round differently per path (Resources/docs/tests.md).
         out << "rosin " ROSIN_VERSION "\n"
             << "kernels: " << physics::simdLevelName(physics::simdLevel())
             << " (ROSIN_SIMD chooses a lower one)\n";

@@ -1,7 +1,7 @@
 #pragma once
 // `rosin render --loop FILE.png [--loop-interval A:B]`: the friction/velocity hysteresis loop of a chosen
-// interval of the render (seed 000 Fig. 2c, seed 001 Figs. 20-21), kept as FILE.csv beside the figure, which
-// the lab's figure script draws.
+// interval of the render ([Smith2000] Fig. 2c, [Galluzzo2017] Figs. 20-21), kept as FILE.csv beside the
+// figure, which the lab's figure script draws.
 #include <optional>
 #include <ostream>
 #include <string>

@@ -56,9 +56,11 @@ constexpr physics::Range kTail{0.0, 60.0, "s"};
 const OptionTable& midiOptionTable()
 {
     static const OptionTable table({
-        {"--midi", "FILE.mid", "standard MIDI file; all tracks are merged (see README: MIDI map)"},
+        {"--midi", "FILE.mid", "standard MIDI file; all tracks are merged (the manual's MIDI map)"},
         {"--preset", "NAME", "a factory program (default cello-plastic): one of the presets/ names"},
-        {"--automation", "FILE.json", "parameter lanes, \"format\": \"rosin-automation/1\" (see README)"},
+        {"--automation", "FILE.json",
+         "parameter lanes, \"format\": \"rosin-automation/1\" (the manual's\n"
+         "rendering page)"},
         {"--out", "FILE.wav", "default rosin-midi.wav"},
         {"--output", "WHAT",
          "the plugin's Output parameter: radiated (the sound the body radiates to a\nlistener at 1 m, "
@@ -71,7 +73,7 @@ const OptionTable& midiOptionTable()
          "of the modal body's radiation"},
         {"--quality", "full|live",
          "the plugin's Quality parameter: the full model (default), or live, whose\nstrings and body stop at "
-         "10 kHz (README: Quality)"},
+         "10 kHz (the manual's benchmarks page)"},
         {"--sample-rate", "HZ", physics::limits::sampleRate.describe() + ", default 48000"},
         {"--block-size", "N",
          "host block size, " + kBlockSize.describe() + ", default 512; the output\ndoes not depend on it"},

@@ -1,6 +1,6 @@
 #pragma once
 // The internal channels `rosin render --probe` writes, in file order. Names and units follow the
-// measured-data format (shared spec "measurements.md"), so a probe file can stand in for a measured trial.
+// measured-data format (Resources/docs/measurements.md), so a probe file can stand in for a measured trial.
 #include <array>
 
 namespace rosin::cli

@@ -230,7 +230,8 @@ const OptionTable& renderOptionTable()
         {"--body", "BODY", "replace the preset's body: cello, violin, rigid"},
         {"--sample-rate", "HZ", physics::limits::sampleRate.describe() + ", default 48000"},
         {"--loop", "FILE.png",
-         "also draw the friction/velocity hysteresis loop (seed 001 Figs. 20-21)\nand keep its samples in "
+         "also draw the friction/velocity hysteresis loop ([Galluzzo2017] Figs. 20-21)\nand keep its samples "
+         "in "
          "FILE.csv"},
         {"--loop-interval", "A:B", "the loop's interval in seconds (default: the last 0.05 s)"},
         {"-h, --help", "", "this text"},
@@ -308,7 +309,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
     const gesture::GestureScript script = chooseGesture(gestureSpec, start);
     gesture::BowGesture bow;
     bow.prepare(script, start, o.sampleRate);
-    if (preset.rig) // seed 000's oscillator rig instead of the string and body
+    if (preset.rig) // [Smith2000]'s oscillator rig instead of the string and body
         return renderRig(preset, setup, bow, script.totalSeconds(),
                          {gestureSpec, o.sampleRate, o.out, o.probe, o.scale, o.loop}, out, err);
 

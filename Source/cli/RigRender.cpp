@@ -1,4 +1,4 @@
-// `rosin render` for seed 000's oscillator rig (RigRender.h).
+// `rosin render` for [Smith2000]'s oscillator rig (RigRender.h).
 #include "cli/RigRender.h"
 #include "cli/CommandLine.h"
 
@@ -43,7 +43,7 @@ struct LoopRow
     double time, slidingSpeed, frictionForce, normalForce, contactTemperature;
 };
 
-// Writes the loop's samples; the friction coefficient mu = f / N is what seed 000 Figs. 2c and 6 plot.
+// Writes the loop's samples; the friction coefficient mu = f / N is what [Smith2000] Figs. 2c and 6 plot.
 void writeLoopCsv(const std::vector<LoopRow>& rows, const std::string& path)
 {
     std::string text = "time,slidingSpeed,frictionForce,contactTemperature,normalForce,frictionCoefficient\n";
@@ -58,7 +58,8 @@ void writeLoopCsv(const std::vector<LoopRow>& rows, const std::string& path)
     config::writeFileAtomically(path, text);
 }
 
-// Signed area of the (dv, mu) loop by the shoelace formula: > 0 anticlockwise, the sense of seed 000 Fig. 2c.
+// Signed area of the (dv, mu) loop by the shoelace formula: > 0 anticlockwise, the sense of [Smith2000] Fig.
+// 2c.
 double signedArea(const std::vector<LoopRow>& rows)
 {
     double twice = 0.0;
@@ -94,8 +95,9 @@ std::string rigRenderHelp()
                       kRigChannels[i].unit, kRigChannels[i].what);
         text += line;
     }
-    return text + "and --loop draws the friction coefficient f/N against the sliding speed (seed 000 Figs. "
-                  "2c, 6).\n";
+    return text +
+           "and --loop draws the friction coefficient f/N against the sliding speed ([Smith2000] Figs. "
+           "2c, 6).\n";
 }
 
 int renderRig(const config::Preset& preset, const config::VoiceSetup& setup, gesture::BowGesture& bow,

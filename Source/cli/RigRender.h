@@ -1,7 +1,7 @@
 #pragma once
-// `rosin render --preset NAME` for a preset with a "rig" (seed 000's single-mode oscillator bowed by a rod):
-// the same gesture, friction law, contact, WAV, probe and loop options as for a string, with the rig's own
-// outputs. Chosen by RenderCommand when the preset has a rig.
+// `rosin render --preset NAME` for a preset with a "rig" ([Smith2000]'s single-mode oscillator bowed by a
+// rod): the same gesture, friction law, contact, WAV, probe and loop options as for a string, with the rig's
+// own outputs. Chosen by RenderCommand when the preset has a rig.
 #include <optional>
 #include <ostream>
 #include <string>

@@ -1,7 +1,8 @@
 #pragma once
-// `rosin scan schelleng|guettler|merge`: playability diagrams of one string (seed 001 sections 3.1-3.3),
-// computed on every core, resumable, splittable into shards or over MPI ranks, with the same files whatever
-// the split. The engine is rosin::scan (Source/scan); this file is the command's help and its run.
+// `rosin scan schelleng|guettler|merge`: playability diagrams of one string ([Galluzzo2017]
+// sections 3.1-3.3), computed on every core, resumable, splittable into shards or over MPI ranks, with the
+// same files whatever the split. The engine is rosin::scan (Source/lab/scan/); this file is the command's
+// help and its run.
 #include <ostream>
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 #pragma once
 // `rosin scan compare A B --out DIR`: the difference of two finished scans of the same kind and grid, as a
-// figure in the style of seed 001 Figs. 9-11 (what a model variation changes), drawn by the lab's figure
-// script, and the Helmholtz share of each printed.
+// figure in the style of [Galluzzo2017] Figs. 9-11 (what a model variation changes), drawn by the lab's
+// figure script, and the Helmholtz share of each printed.
 #include <ostream>
 #include <string>
 #include <vector>

@@ -271,7 +271,7 @@ const OptionTable& scanOptionTable()
          "instrument preset (default galluzzo-rig: cello D3 on the cello body, plastic)"},
         {"--friction", "LAW", "classical, reconstructed, plastic, viscous, modified-bow, modified-rod"},
         {"--sample-rate", "HZ", physics::limits::sampleRate.describe() + ", default 48000"},
-        {"", "", "variations (seed 001 Figs. 9-12):"},
+        {"", "", "variations ([Galluzzo2017] Figs. 9-12):"},
         {"--layer-thickness", "M",
          "rosin layer of the steady-sliding (calibration) contact (default 10e-6; Fig. 9: 15e-6)"},
         {"--contact-radius", "M",
@@ -281,7 +281,7 @@ const OptionTable& scanOptionTable()
         {"--rigid-bridge", "", "no body: a rigid bridge (Fig. 12d)"},
         {"--no-torsion", "", "no torsional modes (Fig. 12e)"},
         {"--no-stiffness", "", "no bending stiffness (Fig. 12f)"},
-        {"", "", "grid (defaults: seed 001):"},
+        {"", "", "grid (defaults: [Galluzzo2017]):"},
         {"--grid", "N | NxM",
          "N forces x M betas (schelleng) or x M accelerations (guettler); each 1..300;\ndefault 20x20"},
         {"--force-range", "A:B", "N (default schelleng 0.1:3, guettler 0.4:3.2)"},
@@ -304,7 +304,8 @@ const OptionTable& scanOptionTable()
         {"--classify", "state|bridge-force",
          "how slips are found for the regime and the transient: from the solver's state\n(default: full "
          "flybacks "
-         "of the bowed point) or from the bridge force alone, as\nseed 001 treats measured and simulated "
+         "of the bowed point) or from the bridge force alone, as\n[Galluzzo2017] treats measured and "
+         "simulated "
          "trials "
          "alike (guettler trials then end\nwith their transient window at the latest)"},
         {"", "", "running:"},

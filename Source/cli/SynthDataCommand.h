@@ -1,6 +1,6 @@
 #pragma once
-// `rosin synth-data`: a measured-like dataset ("rosin-measurements/1", shared/spec/measurements.md) from
-// Rosin's model with physical effects hidden (the discovery workflow's test data, issue 5 item 3). The
+// `rosin synth-data`: a measured-like dataset ("rosin-measurements/1", Resources/docs/measurements.md) from
+// Rosin's model with physical effects hidden (the discovery workflow's test data). The
 // engine is rosin::discovery (SynthPlan, SynthRun: JUCE-free); this file is the command's help, its checks
 // of the output paths, and the writing: trial files through writeTrialSignals into DIR.tmp, dataset.json
 // last, then one rename, so a failed or interrupted run leaves nothing behind.

@@ -1,4 +1,4 @@
-// Outputs are replaced whole or not at all (issue 19): text files through a temporary and a rename, WAV files
+// Outputs are replaced whole or not at all: text files through a temporary and a rename, WAV files
 // through juce::TemporaryFile. A failed or killed run leaves the old file and no temporary behind.
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // `rosin discover` through the built binary on small datasets made in the test by `rosin synth-data` (8 x 8
-// Guettler grids of 0.4 s trials at beta 0.0899, issue 5's suggested size); the only channel between
-// generator and workflow is the dataset folder. For each of the six effects of the catalog, hidden alone, the
-// effect is named first and at least half of the gap goes; two hidden effects are both named; a dataset with
-// nothing hidden names nothing, also on data of the independent generator (its gap explained by
+// Guettler grids of 0.4 s trials at beta 0.0899, the workflow's specified test size); the only channel
+// between generator and workflow is the dataset folder. For each of the six effects of the catalog, hidden
+// alone, the effect is named first and at least half of the gap goes; two hidden effects are both named; a
+// dataset with nothing hidden names nothing, also on data of the independent generator (its gap explained by
 // calibration), whose hertz contact in a steady scan is named; a malformed dataset is refused with a message
 // naming the file and field.
 #include <gtest/gtest.h>
@@ -35,7 +35,8 @@ class DiscoverCli : public ::testing::Test
     {
         return rosin::test::cli::runRosin(dir.path(), args);
     }
-    // A Guettler dataset at issue 5's test size with `effects` hidden (extra options after them).
+    // A Guettler dataset at the workflow's specified test size with `effects` hidden (extra options after
+    // them).
     void makeDataset(const std::vector<std::string>& effects, const std::string& seed, const std::string& out,
                      const std::vector<std::string>& extra = {"--beta", "0.0899"})
     {
@@ -113,7 +114,7 @@ TEST_P(DiscoverHiddenEffect, IsNamedFirstAndAtLeastHalvesTheGap)
     EXPECT_GE(j["trialsSkipped"].get<int>(), 1);
     if (h.name == "extra-string-damping")
     {
-        // A family (issue 16 item 4): the fit may put the loss into the bending term alone (the tilt's band)
+        // A family: the fit may put the loss into the bending term alone (the tilt's band)
         // or the internal one alone (the low partials), and an 8 x 8 scan cannot always tell which (seen:
         // internal x 3.02 for all x 3, gap 0.226 -> 0); the signature is the loss where the features read it,
         // so the fitted loss must match the hidden one within 1.5x at the fundamental or in the tilt's band.
@@ -173,7 +174,7 @@ INSTANTIATE_TEST_SUITE_P(EveryEffect, DiscoverHiddenEffect,
                              return name;
                          });
 
-// A known shortfall (issue 16), asserted as measured so that a change either way is noticed: since the
+// A known shortfall, asserted as measured so that a change either way is noticed: since the
 // calibration, a larger contact (radius at its prior's top, x1.15) mimics most of the modified law's cold
 // breakaway on this 8 x 8 set (gap 1.59 -> 0.56), and breakaway-jump, fitted from the stated values, is the
 // best candidate and the only one that helps (held-out gain +44.5 %, every other one below -5 %), but its
@@ -242,7 +243,7 @@ TEST_F(DiscoverCli, NothingHiddenNamesNothing)
     EXPECT_GT(j["remainingGap"]["pValue"].get<double>(), 0.01);
 }
 
-// Data that Rosin's stepper did not make (issue 16 item 6): the independent generator's waveguide string,
+// Data that Rosin's stepper did not make: the independent generator's waveguide string,
 // heat balance and measurement chain, with the rig's constants off nominal within a lab's tolerances and an
 // unstated low-pass, gain error and start delay. The nominal baseline is far off (gap 1.59 measured), the
 // calibration within the stated tolerances explains it (0.26), and no effect is named (every candidate's
@@ -267,7 +268,7 @@ TEST_F(DiscoverCli, ForeignDataWithNothingHiddenIsExplainedByCalibration)
 // where the measurement does, so it does not minimise this number). The descent that fitted the contact
 // radius first, which flattens the pitch a little as a lower tension does, stayed at the nominal tension
 // there (gap 1.08 -> 1.10). Nothing is hidden, so nothing may be named and the verdict must be clean: the
-// remaining gap's p was 0.51 on x86-64-v4 and 1 on x86-64-v3 and the baseline path (28 November 2026, with
+// remaining gap's p was 0.51 on x86-64-v4 and 1 on x86-64-v3 and the baseline path (with
 // the steady level's model-form tolerance measured on six other seeds; before it, 0.0075 on x86-64-v4,
 // where the calibration takes another of two near-equal optima), against the verdict's 0.01.
 TEST_F(DiscoverCli, CalibrationRecoversTheTensionOfAForeignString)
@@ -293,7 +294,7 @@ TEST_F(DiscoverCli, CalibrationRecoversTheTensionOfAForeignString)
     EXPECT_GT(p, 0.05) << j["remainingGap"].dump();
 }
 
-// Hertz contact in another string model's steady bowing (issue 16): the independent generator's own form
+// Hertz contact in another string model's steady bowing: the independent generator's own form
 // (area ~ F^0.634 about 0.68 N) in a 12 x 12 Schelleng scan. On the held-out half alone the catalog's
 // hertz contact came within a hair of the bar (+26.5 %, p 0.0028 against 0.0017 on x86-64-v4; p 1e-4 on
 // x86-64-v3), so the candidate is cross-fitted: fitted on each half and scored on the other, +32 %,

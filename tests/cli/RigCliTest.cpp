@@ -1,5 +1,5 @@
-// `rosin render --preset cantilever` (seed 000's oscillator rig): a WAV, a 7-channel probe in SI units whose
-// first five channels match the string probe's, and the friction-coefficient loop as CSV and PNG.
+// `rosin render --preset cantilever` ([Smith2000]'s oscillator rig): a WAV, a 7-channel probe in SI units
+// whose first five channels match the string probe's, and the friction-coefficient loop as CSV and PNG.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -57,7 +57,7 @@ TEST(RigCli, CantileverWritesWavProbeAndLoopFigure)
     for (int k = 0; k < probe.getNumSamples(); ++k)
     {
         ASSERT_FLOAT_EQ(probe.getSample(3, k), 0.05f) << k; // rod velocity, m/s (steady's default speed)
-        // Seed 000 eq. 1 read back from the file: m a + R v + S x = f, in SI units.
+        // [Smith2000] eq. 1 read back from the file: m a + R v + S x = f, in SI units.
         const double m = 0.0216, w = 2.0 * M_PI * 108.0;
         const double residual = m * probe.getSample(6, k) + m * w / 20.0 * probe.getSample(1, k) +
                                 m * w * w * probe.getSample(5, k) - probe.getSample(2, k);

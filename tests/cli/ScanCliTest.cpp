@@ -320,7 +320,7 @@ TEST_F(ScanCli, FigureScriptsAreFoundBesideTheExecutable)
     EXPECT_EQ(slurp(path("installed/drawn-by-installed-script")), "yes");
 }
 
-// Issue 19's shell injection: the output folder reaches the figure script as one argument, never through a
+// No shell injection: the output folder reaches the figure script as one argument, never through a
 // shell, so a folder named like a command is only a name.
 TEST_F(ScanCli, AnOutputFolderNamedLikeAShellCommandIsOnlyAName)
 {

@@ -333,7 +333,7 @@ TEST_F(SynthDataCli, UsageErrorsExitWithTwo)
     EXPECT_FALSE(fs::exists(path("x")));
 }
 
-// Seed 001's first-slip analysis as a laboratory runs it (from the bridge force alone, the sensor's
+// [Galluzzo2017]'s first-slip analysis as a laboratory runs it (from the bridge force alone, the sensor's
 // high-pass undone, the nominal force): junction growth makes the contact stronger after its hold.
 TEST_F(SynthDataCli, FirstSlipFrictionRisesWithJunctionGrowth)
 {

@@ -1,5 +1,5 @@
-# Fails, naming the files, when a C++ file of the project is not formatted as .clang-format says (issue 21: CI
-# fails on unformatted code). Run by CTest as format.clang-format:
+# Fails, naming the files, when a C++ file of the project is not formatted as .clang-format says, so CI
+# fails on unformatted code. Run by CTest as format.clang-format:
 #   cmake -DCLANG_FORMAT=... -DROOT=... -P CheckFormat.cmake
 # Fix with: clang-format -i FILE (Debian's clang-format 14, installed by .ci/install-deps).
 if(NOT CLANG_FORMAT)

@@ -1,4 +1,4 @@
-// Golden renders (issue 21): a short render per friction law (`rosin render --gesture`, the bridge force) and
+// Golden renders: a short render per friction law (`rosin render --gesture`, the bridge force) and
 // per factory program (`rosin render --midi`, one note, what the plugin outputs), each compared with a
 // reference stored in tests/golden/references. A physics or engine change that moves a render fails here, so
 // it is made consciously: ROSIN_GOLDEN_UPDATE=1 writes new references (commit them with the reason).

@@ -1,5 +1,5 @@
 // An installed Rosin found the way a DAW finds plugins: by scanning its plugin folders, not by a path handed
-// to it. Run by tests/install (issue 20), not by the normal suite: over $ROSIN_PLUGINHOST_SCAN_PATH (the
+// to it. Run by tests/install, not by the normal suite: over $ROSIN_PLUGINHOST_SCAN_PATH (the
 // staged DESTDIR folders) or, unset, over the formats' default locations (~/.vst3, /usr/lib/vst3, ~/.lv2,
 // /usr/lib/lv2, ... after the Debian package is installed). The Rosin found must load, list its factory
 // programs and play.

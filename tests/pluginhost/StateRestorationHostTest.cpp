@@ -1,4 +1,4 @@
-// Saved states through the bundles, as a host hands them over (issue 19, items 7-8):
+// Saved states through the bundles, as a host hands them over:
 //   - pluginval's "state restoration": every parameter set to a random value (switches to fractions), a saved
 //     state restored, each parameter read back within 0.1 of the saved value;
 //   - damaged project files: non-finite values, a state nested 30,000 deep, a 1 MB attribute of '&', byte

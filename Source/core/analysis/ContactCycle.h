@@ -6,7 +6,8 @@
 //     ideal Helmholtz motion the string slips at -v_b (1 - beta) / beta, ten times v_b at beta 0.09, and
 //     sticks at 0, so the threshold is far from both; ideal Helmholtz motion slips for beta of the period,
 //     rounded corners for longer);
-//   * the hysteresis loop's area (seed 000 Fig. 2c, seed 001 Figs. 20-21): the signed area enclosed by the
+//   * the hysteresis loop's area ([Smith2000] Fig. 2c, [Galluzzo2017] Figs. 20-21): the signed area enclosed
+//   by the
 //     friction coefficient f / N against the sliding speed v - v_b, per period, divided by the mean bow
 //     speed so that loops at different speeds compare. A friction curve traces the same path out and back
 //     (area 0); a thermal law's friction lags the temperature, so slipping ends at a lower coefficient than

@@ -1,6 +1,6 @@
 #pragma once
 // The first slip of a constant-acceleration trial (bow speed v_b = a t from rest, constant force N, bow at
-// beta) and what it says about the rosin (seed 001 section 4.1, Figs. 15-16):
+// beta) and what it says about the rosin ([Galluzzo2017] section 4.1, Figs. 15-16):
 //   mu_s = F_br(just before the first slip) / ((1 - beta) N)     (force balance of the stuck string)
 //   jump = (F_br before the fall - F_br right after it) / N
 //
@@ -12,8 +12,8 @@
 // A fit over hundreds of samples averages the sensor noise away. A first-order high-pass in the sensor
 // (a piezo force gauge) is undone exactly before the fit: x = y + omega_c * integral(y) dt.
 //
-// Limits: a first slip with no abrupt fall (seed 001: the thermal law's rounded start, or a measured jump
-// "vanishingly small") is not found from the force; pass the slip from the state when there is one.
+// Limits: a first slip with no abrupt fall ([Galluzzo2017]: the thermal law's rounded start, or a measured
+// jump "vanishingly small") is not found from the force; pass the slip from the state when there is one.
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -29,7 +29,7 @@ struct FirstSlipOptions
     double periodSeconds = 0.0;    ///< nominal P = 1/f0, s (> 0)
     double highPassCutoffHz = 0.0; ///< first-order high-pass of the sensor to undo, Hz (0 = none)
     /// Read the parabola at the fall minus beta P / 2 (the slip at the bow) rather than at the fall itself
-    /// (the seed's measured "force before the slip", which at t1 = 37 ms is ~1.7 % higher).
+    /// ([Galluzzo2017]'s measured "force before the slip", which at t1 = 37 ms is ~1.7 % higher).
     bool travelTimeCorrection = true;
     // Detection of the first fall from the force (ours):
     double fallOfLevel = 0.1;  ///< the fall must be this share of the force reached

@@ -1,8 +1,9 @@
 #pragma once
-// A friction/velocity hysteresis loop (seed 000 Fig. 2c and Fig. 6, seed 001 Figs. 20-21): the friction force
-// at the bowed point against the sliding speed v - v_b, over a chosen interval of a simulation, kept with the
-// contact temperature so the figure can colour the loop by it. Written as CSV (time,slidingSpeed,
-// frictionForce,contactTemperature), the input of `plot_scan.py loop` (Resources/docs/scan-format.md).
+// A friction/velocity hysteresis loop ([Smith2000] Fig. 2c and Fig. 6, [Galluzzo2017] Figs. 20-21): the
+// friction force at the bowed point against the sliding speed v - v_b, over a chosen interval of a
+// simulation, kept with the contact temperature so the figure can colour the loop by it. Written as CSV
+// (time,slidingSpeed, frictionForce,contactTemperature), the input of `plot_scan.py loop`
+// (Resources/docs/scan-format.md).
 #include <string>
 #include <vector>
 
@@ -31,8 +32,9 @@ class HysteresisLoop
     /// Fraction of the kept samples in which the string and bow stick (dv = 0).
     double stickingFraction() const noexcept;
     /// Signed area enclosed in the (dv, f) plane per cycle, by the shoelace formula over the whole interval:
-    /// > 0 when the loop runs anticlockwise in these axes, < 0 clockwise. N m/s. The seeds plot |mu| against
-    /// |dv|; with the bow faster than the string (dv < 0, f > 0) that view mirrors dv, which flips the sense.
+    /// > 0 when the loop runs anticlockwise in these axes, < 0 clockwise. N m/s. [Smith2000] and
+    /// [Galluzzo2017] plot |mu| against |dv|; with the bow faster than the string (dv < 0, f > 0) that view
+    /// mirrors dv, which flips the sense.
     double signedArea() const noexcept;
     /// The loop as CSV text: the header "time,slidingSpeed,frictionForce,contactTemperature", a row per
     /// sample.

@@ -1,5 +1,5 @@
 #pragma once
-// The steady-state regimes of a bowed string that the playability lab tells apart (physics reference §7.4),
+// The steady-state regimes of a bowed string that the playability lab tells apart ([Notes §7.4]),
 // with stable short names for CSV files and plots.
 #include <optional>
 #include <string_view>

@@ -1,5 +1,5 @@
 #pragma once
-// The steady-state regime of a bowed string over an analysis window (physics reference §7.4), judged from
+// The steady-state regime of a bowed string over an analysis window ([Notes §7.4]), judged from
 // its slip onsets and, when given, the bridge force.
 //
 // The onsets are read as a repeating pattern: the smallest k (slips per cycle) for which (nearly) every
@@ -22,19 +22,19 @@
 namespace rosin::analysis
 {
 
-/// Thresholds, each marked with its origin. "Reference" = physics reference §7.4 (itself partly [A]).
+/// Thresholds, each marked with its origin. "Notes" = [Notes §7.4] (itself partly [A]).
 namespace regime_thresholds
 {
-/// ALF: periodic with a period >= 1.1 P (reference).
+/// ALF: periodic with a period >= 1.1 P (notes).
 inline constexpr double kAlfMinPeriodRatio = 1.1;
-/// Helmholtz-family period band |P_m/P - 1| < 0.1 (ours). The reference asks +-3 % for Helmholtz, but a
+/// Helmholtz-family period band |P_m/P - 1| < 0.1 (ours). The notes ask +-3 % for Helmholtz, but a
 /// stopped string on a body and the flattening near F_max shift the pitch by several %, which is reported
 /// (RegimeAnalysis::withinReferencePitch, cents) rather than relabelled. Below 0.9 P a period must be a
 /// sub-multiple of P within this tolerance.
 inline constexpr double kPeriodTolerance = 0.10;
-/// The reference's own pitch tolerance for Helmholtz (reported, not used to label).
+/// The notes' own pitch tolerance for Helmholtz (reported, not used to label).
 inline constexpr double kReferencePeriodTolerance = 0.03;
-/// S-motion: sawtoothness s = |F1|/(2|F2|) outside 0.7..1.3 (reference, "e.g.").
+/// S-motion: sawtoothness s = |F1|/(2|F2|) outside 0.7..1.3 (notes, "e.g.").
 inline constexpr double kSawtoothMin = 0.7;
 inline constexpr double kSawtoothMax = 1.3;
 /// Periodic pattern: |Delta_{i+k} - Delta_i| below 3 % of the cycle (ours: sampling jitter of a simulation is
@@ -46,16 +46,16 @@ inline constexpr double kMinPatternShare = 0.9;
 inline constexpr int kMaxSlipsPerCycle = 6;
 /// At least this many whole cycles in the window to call it periodic (ours).
 inline constexpr int kMinCycles = 3;
-/// Normalised autocorrelation of the bridge force at lag P_m below this -> raucous (reference: "< 0.9").
+/// Normalised autocorrelation of the bridge force at lag P_m below this -> raucous (notes: "< 0.9").
 inline constexpr double kMinAutocorrelation = 0.9;
-/// Sliding for at least this share of the window -> constant slipping (ours; reference: "no sticking").
+/// Sliding for at least this share of the window -> constant slipping (ours; notes: "no sticking").
 inline constexpr double kConstantSlippingFraction = 0.95;
 /// Force alone, no onsets: a rise across the window above this many residual rms -> the string is dragged
 /// with the bow (no-slip); otherwise it slides steadily (constant slipping) (ours).
 inline constexpr double kDragTrendFactor = 5.0;
 } // namespace regime_thresholds
 
-/// [begin, end) in samples; end = 0 means to the end of the signal. Reference §7.4 analyses the last >= 20
+/// [begin, end) in samples; end = 0 means to the end of the signal. [Notes §7.4] analyses the last >= 20
 /// periods, after the transient.
 struct AnalysisWindow
 {
@@ -71,7 +71,7 @@ struct RegimeAnalysis
     int slipsPerCycle = 0;       ///< k of the repeating pattern (0 if none)
     double measuredPeriod = 0.0; ///< P_m, samples (mean k-lag interval; 0 if no pattern)
     double pitchCents = 0.0;     ///< 1200 log2(P / P_m): deviation of the pattern's pitch from nominal
-    bool withinReferencePitch = false; ///< |P_m/P - 1| < 3 % (reference's Helmholtz tolerance)
+    bool withinReferencePitch = false; ///< |P_m/P - 1| < 3 % (the Helmholtz tolerance of [Notes §7.4])
     double intervalCv = 0.0;           ///< coefficient of variation of successive onset intervals
     double patternError = 0.0;         ///< rms (Delta_{i+k} - Delta_i) / P_m for the chosen k (k = 1 if none)
     double patternShare = 0.0;         ///< share of pairs with |Delta_{i+k} - Delta_i| < 3 % of P_m (same k)

@@ -1,5 +1,5 @@
 #pragma once
-// Where the string starts to slip, found two ways (physics reference §7.2):
+// Where the string starts to slip, found two ways ([Notes §7.2]):
 //  * from the simulation's own state: a slip episode is a maximal run of non-sticking samples (exact), a
 //    flyback if the string moves backwards in it (partial slips, in which it only lags the bow, are not);
 //  * from the bridge force alone, as a measurement gives it: the sharp falls of the sawtooth (the flyback
@@ -47,7 +47,7 @@ ForceAndState forceAndState(const std::vector<physics::VoiceSample>& samples);
 
 /// Episodes from the relative velocity dv = v - v_b at the bow (m/s): sliding where |dv| > threshold (m/s).
 /// With bowVelocity (same length, or empty) each episode also records whether it was a flyback.
-/// Reference §7.2 suggests threshold = 1 % of v_b to ignore numerical chatter.
+/// [Notes §7.2] suggests threshold = 1 % of v_b to ignore numerical chatter.
 std::vector<SlipEpisode> slipEpisodesFromRelativeVelocity(const std::vector<double>& relativeVelocity,
                                                           double threshold,
                                                           const std::vector<double>& bowVelocity = {});
@@ -69,11 +69,11 @@ std::vector<std::size_t> onsetsOf(const std::vector<SlipEpisode>& episodes);
 /// Share of sliding samples in [begin, end) of the sticking flag (end clamped to its size); 0 if empty.
 double slipFraction(const std::vector<bool>& sticking, std::size_t begin, std::size_t end);
 
-/// Settings of the bridge-force onset detector. Defaults: reference §7.2 where it gives a value, else ours.
+/// Settings of the bridge-force onset detector. Defaults: [Notes §7.2] where it gives a value, else ours.
 struct ForceOnsetOptions
 {
-    double relativeThreshold = 0.3; ///< of the largest fall in the local window (reference §7.2)
-    /// No two onsets closer than this many P (ours). The reference's ~0.3 P would hide multiple slipping:
+    double relativeThreshold = 0.3; ///< of the largest fall in the local window ([Notes §7.2])
+    /// No two onsets closer than this many P (ours). The ~0.3 P of [Notes §7.2] would hide multiple slipping:
     /// the simulated cello D at 0.05 N slips three times a period, 0.26 P apart at the closest.
     double refractoryPeriods = 0.15;
     double localWindowPeriods = 2.0; ///< the "window" of the relative threshold is +-this many P (ours)

@@ -1,7 +1,7 @@
 #pragma once
-// How long a bowed attack takes to settle into Helmholtz motion (physics reference §7.3; seed 001 Figs. 5-8):
+// How long a bowed attack takes to settle into Helmholtz motion ([Notes §7.3]; [Galluzzo2017] Figs. 5-8):
 // counted in periods from the first slip to the start of the Helmholtz motion that then lasts, with a cap
-// (20 periods in seed 001) above which the pixel is "not reached".
+// (20 periods in [Galluzzo2017]) above which the pixel is "not reached".
 //
 // An interval between successive slip onsets is a Helmholtz period when |Delta_i - P|/P < tolerance (and,
 // if durations are known and a limit given, its slip was shorter than ~2 beta P). One extra slip splits a
@@ -17,7 +17,7 @@
 namespace rosin::analysis
 {
 
-/// What went wrong before Helmholtz motion took over (reference §7.3 step 6).
+/// What went wrong before Helmholtz motion took over ([Notes §7.3] step 6).
 enum class TransientFailure
 {
     None,             ///< no interval out of tolerance before t_H: a perfect start (or only long slips)
@@ -30,10 +30,10 @@ const char* transientFailureName(TransientFailure failure) noexcept;
 
 struct TransientOptions
 {
-    double tolerance = 0.05;  ///< |Delta - P|/P below this is a Helmholtz period (reference §7.3)
-    int minRunPeriods = 5;    ///< the Helmholtz run must have at least this many intervals (reference §7.3)
-    double capPeriods = 20.0; ///< transients this long or longer are "not reached" (seed 001: 20)
-    /// Longest slip of a Helmholtz period, samples (reference §7.3: < 2 beta P, "loose"); 0 = not checked
+    double tolerance = 0.05;  ///< |Delta - P|/P below this is a Helmholtz period ([Notes §7.3])
+    int minRunPeriods = 5;    ///< the Helmholtz run must have at least this many intervals ([Notes §7.3])
+    double capPeriods = 20.0; ///< transients this long or longer are "not reached" ([Galluzzo2017]: 20)
+    /// Longest slip of a Helmholtz period, samples ([Notes §7.3]: < 2 beta P, "loose"); 0 = not checked
     /// (always the case for onsets from the bridge force, which carry no durations).
     double maxSlipDuration = 0.0;
     /// End of the analysed window, samples (0 = the last onset). A final gap longer than a Helmholtz period
@@ -48,7 +48,7 @@ struct TransientLength
     std::optional<std::size_t> helmholtzStart; ///< t_H, samples (empty if no lasting Helmholtz run)
     /// (t_H - t1)/P, periods; empty when not reached: no lasting run, or one starting at or after the cap.
     std::optional<double> periods;
-    /// Fewer than capPeriods periods of data after t1: the seed's "x" pixel (unsuccessful measurement).
+    /// Fewer than capPeriods periods of data after t1: [Galluzzo2017]'s "x" pixel (unsuccessful measurement).
     bool insufficientData = false;
     TransientFailure failure = TransientFailure::None;
     double shortIntervalPeriods = 0.0; ///< time before t_H spent in intervals < P(1 - tol), periods

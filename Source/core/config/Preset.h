@@ -1,6 +1,6 @@
 #pragma once
-// An instrument preset: which string, body, friction law and contact, and the model switches of seed 001
-// Fig. 12 (torsion, bending stiffness). Slow parameters only; the bow gesture is separate.
+// An instrument preset: which string, body, friction law and contact, and the model switches of
+// [Galluzzo2017] Fig. 12 (torsion, bending stiffness). Slow parameters only; the bow gesture is separate.
 // Stored as JSON "rosin-preset/1" (Resources/docs/presets.md); absent fields keep the Galluzzo-rig defaults
 // below.
 #include <optional>
@@ -22,7 +22,8 @@ struct ContactOverrides
     std::optional<physics::ContactScaling> scaling;
 };
 
-/// Seed 000's single-mode oscillator rig, bowed by a rod, in place of a string and body (preset field "rig").
+/// [Smith2000]'s single-mode oscillator rig, bowed by a rod, in place of a string and body (preset field
+/// "rig").
 struct RigPreset
 {
     physics::OscillatorRigParameters oscillator;
@@ -39,14 +40,14 @@ struct Preset
     physics::StringParameters string = physics::stringFromCatalogue("cello-D3");
     std::string body = "cello";       ///< "cello", "violin" or "rigid"
     std::string friction = "plastic"; ///< a physics::frictionModelNames() entry
-    std::string contact = "galluzzo"; ///< base contact: "galluzzo" or "schumacher" (seed 001 Table 2)
+    std::string contact = "galluzzo"; ///< base contact: "galluzzo" or "schumacher" ([Galluzzo2017] Table 2)
     ContactOverrides contactOverrides;
-    bool torsion = true;          ///< torsional modes on (seed 001 Fig. 12e turns them off)
-    bool bendingStiffness = true; ///< EI on (seed 001 Fig. 12f turns it off)
+    bool torsion = true;          ///< torsional modes on ([Galluzzo2017] Fig. 12e turns them off)
+    bool bendingStiffness = true; ///< EI on ([Galluzzo2017] Fig. 12f turns it off)
     double ambientOffset = 0.0;   ///< K, rosin temperature at rest minus the calibration's ambient
     double beta = 0.0899;         ///< default bow position for gestures that do not set one
     /// dB, the plugin's output level for this program (its default -12 dB when absent): a calibration, set so
-    /// that the demo phrase peaks near -6 dBFS (README, "What the plugin sends").
+    /// that the demo phrase peaks near -6 dBFS (Resources/docs/playing.md, "Levels and clicks").
     std::optional<double> outputLevel;
     /// The plugin's measured body response for this program (absolute path of a WAV file; the file may give
     /// it relative to its own folder): bridge force (N) to sound pressure (Pa). Absent: the modal body.
@@ -54,7 +55,7 @@ struct Preset
     std::optional<RigPreset> rig; ///< set: the rig is bowed instead of the string and body
 };
 
-/// The renderer's default: open cello D3 of the seed's Galluzzo rig, cello body, plastic friction,
+/// The renderer's default: open cello D3 of the Galluzzo rig [Galluzzo2017], cello body, plastic friction,
 /// Galluzzo contact, beta 0.0899 (presets/galluzzo-rig.json holds the same values).
 inline Preset defaultPreset()
 {

@@ -27,7 +27,7 @@ constexpr Range kTension{1.0, 5000.0, "N"};
 constexpr Range kMassPerLength{1e-5, 0.1, "kg/m"};
 constexpr Range kLength{0.05, 3.0, "m"};
 constexpr Range kBendingStiffness{0.0, 0.1, "N m^2"};
-constexpr Range kLossCoefficient{0.0, 10000.0, "as printed in seed 001 Table 1"};
+constexpr Range kLossCoefficient{0.0, 10000.0, "as printed in [Galluzzo2017] Table 1"};
 constexpr Range kLossA{0.0, 1000.0, "1/s"};
 constexpr Range kTorsionalWaveSpeed{1.0, 100000.0, "m/s"};
 constexpr Range kTorsionalQ{1.0, 10000.0, ""};

@@ -57,7 +57,7 @@ VoiceSetup buildVoiceSetup(const Preset& preset)
     setup.contact.rig.layerThickness = o.layerThickness.value_or(setup.contact.rig.layerThickness);
     setup.contact.rig.scaling = o.scaling.value_or(setup.contact.rig.scaling);
     if (preset.contact == "cantilever")
-        setup.contact.calibration = setup.contact.rig; // seed 000 calibrated on the rig's own contact
+        setup.contact.calibration = setup.contact.rig; // [Smith2000] calibrated on the rig's own contact
     setup.contact.ambientOffset = preset.ambientOffset;
 
     setup.friction = physics::frictionModelFromName(preset.friction);

@@ -19,7 +19,7 @@ struct VoiceSetup
 
 /// "cello", "violin", "rigid" (physics::bodyByName accepts exactly these).
 const std::vector<std::string>& bodyNames();
-/// "galluzzo", "schumacher": the seed 001 Table 2 contacts; "cantilever": seed 000's rig
+/// "galluzzo", "schumacher": the [Galluzzo2017] Table 2 contacts; "cantilever": [Smith2000]'s rig
 /// (CantileverContact.h).
 const std::vector<std::string>& contactNames();
 /// physics::frictionModelNames(), for validation messages.

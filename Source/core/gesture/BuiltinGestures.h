@@ -1,5 +1,5 @@
 #pragma once
-// The two gestures of the seeds, written on the command line as NAME[:key=value,...]:
+// The two gestures of [Galluzzo2017], written on the command line as NAME[:key=value,...]:
 //   steady:speed=0.05,force=1.0,beta=0.1,seconds=1            bow at constant speed from t = 0 (Schelleng)
 //   guettler:acceleration=1.56,force=1.0,beta=0.0899,seconds=0.5  constant acceleration from rest (Guettler)
 // Every key is optional (defaults as shown); both also take finger=RATIO (default 1, the open string).

@@ -32,7 +32,7 @@ inline constexpr const char* kBowForceReferenceString = "cello-C2";
 /// string's, as a player's arm lightens on thinner strings. Schelleng's maximum force is 2 Z0 v_b / (beta
 /// (mu_s - mu_d)), so every string, on either instrument, plays at the same fraction of it and is flattened
 /// alike by the force (the flattening grows with that fraction). One force for all strings had put the
-/// cello's open A 20 cents flat and the violin's open D 37 cents flat at the default 1 N (session 26).
+/// cello's open A 20 cents flat and the violin's open D 37 cents flat at the default 1 N.
 double bowForceShare(double impedance);
 
 /// Builds and prepares the instrument of `key` with `extras` at `sampleRate`. A program whose extras do not

@@ -116,7 +116,7 @@ std::vector<ParameterSpec> buildSpecs()
     s.push_back(choice(ids::output, "Output", outputNames(), static_cast<int>(OutputChoice::RadiatedSound)));
     s.push_back(onOff(ids::dcBlocker, "DC blocker", true));
     // The plugin's own bypass (getBypassParameter): hosts show it as theirs, and JUCE's VST3 wrapper then
-    // never parses the private trailer of a saved state (a damaged trailer crashed it, issue 19).
+    // never parses the private trailer of a saved state (a damaged trailer crashed it).
     s.push_back(onOff(ids::bypass, "Bypass", false));
     // Appended, not inserted: the table's order is the automation files' and the saved states' order.
     s.push_back(choice(ids::quality, "Quality", {"full", "live"}, static_cast<int>(ModelQuality::Full)));

@@ -103,7 +103,8 @@ std::vector<std::unique_ptr<juce::RangedAudioParameter>> makeParameters();
 bool setPlainValue(juce::RangedAudioParameter& parameter, float plain, bool onlyIfChanged = false);
 
 /// How much of the model runs: the full model, or the live quality, whose strings and body stop at
-/// kLiveBandwidthHz (the README's "Quality" gives its cost and what it changes in the sound).
+/// kLiveBandwidthHz (Resources/docs/benchmarks.md, "Quality", gives its cost and what it changes in the
+/// sound).
 enum class ModelQuality : int
 {
     Full,

@@ -31,7 +31,7 @@ std::optional<FactoryProgram> parseEmbedded(const char* resourceName)
         const std::string stem = std::filesystem::path(fileName).stem().string();
         config::Preset preset = config::parsePreset(
             config::parseJsonText(std::string(data, static_cast<std::size_t>(bytes)), file), file, stem);
-        if (preset.rig) // seed 000's oscillator rig: played by `rosin render`, not by the instrument
+        if (preset.rig) // [Smith2000]'s oscillator rig: played by `rosin render`, not by the instrument
             return std::nullopt;
         return FactoryProgram{stem, std::move(preset)};
     }

@@ -4,7 +4,7 @@
 // them, each block played by the same BlockPlayer as the plugin's processBlock. Every event lands at its own
 // sample and automation moves on a fixed control grid, so a render does not depend on the block size, and it
 // equals the plugin's output for the same program, parameters, events and blocks bit for bit
-// (tests/plugin/OfflineRenderTest.cpp).
+// (tests/instrument/plugin/OfflineRenderTest.cpp).
 #include <optional>
 #include <vector>
 

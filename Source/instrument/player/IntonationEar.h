@@ -1,8 +1,8 @@
 #pragma once
 // The player's ear: a cellist does not play in tune by finger geometry alone. Helmholtz motion sounds flat
-// of f_open / finger ratio as the bow force rises (the corner rounding of seed 001 section 4.2), and a short
-// stopped length of a stiff string sounds sharp of it; players hear the difference and move the finger. This
-// class does the same, one string at a time (JUCE-free, allocation-free, per sample):
+// of f_open / finger ratio as the bow force rises (the corner rounding of [Galluzzo2017] section 4.2), and a
+// short stopped length of a stiff string sounds sharp of it; players hear the difference and move the finger.
+// This class does the same, one string at a time (JUCE-free, allocation-free, per sample):
 //   - it listens to the string's own flybacks (slip episodes in which the string moves backwards against the
 //     bow, |v - v_b| > |v_b|), as analysis::LiveRegimeMeter does;
 //   - each flyback looks back for the flyback one period earlier (within -15 %..+18 % of the nominal

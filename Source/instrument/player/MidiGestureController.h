@@ -1,7 +1,7 @@
 #pragma once
 // MIDI and host parameters -> per-string physics::BowInput, one sample at a time (JUCE-free).
 //
-// MIDI map (README "MIDI map"):
+// MIDI map (Resources/docs/playing.md, "MIDI map"):
 //   note on      a stroke on the note's string: the "string" parameter if set, else the keyswitch choice,
 //                else the default choice (StringChoice.h); the finger stops the string at f_open / f_note.
 //                From rest: constant acceleration (Guettler) at attackAcceleration x

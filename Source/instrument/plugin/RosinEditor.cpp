@@ -30,7 +30,7 @@ RosinEditor::RosinEditor(RosinProcessor& processor)
     addAndMakeVisible(schelleng_);
     keyboard_.setAvailableRange(kLowestKey, kHighestKey);
     keyboard_.setLowestVisibleKey(kLowestKey);
-    keyboard_.setOctaveForMiddleC(4);   // MIDI 60 = C4, as the README names notes (C2 = 36)
+    keyboard_.setOctaveForMiddleC(4);   // MIDI 60 = C4, as the manual names notes (C2 = 36)
     keyboard_.setKeyPressBaseOctave(4); // the computer keyboard's row starts at C4
     keyboard_.setWantsKeyboardFocus(true);
     addAndMakeVisible(keyboard_);

@@ -1,5 +1,5 @@
 #pragma once
-// A saved plugin state read defensively (issue 19, item 7): a project file is user input. Its bytes are
+// A saved plugin state read defensively: a project file is user input. Its bytes are
 // checked before any parsing (size, XML nesting depth: JUCE's XmlDocument recurses per element and grows
 // attribute strings quadratically), every restored parameter value is checked against its range, and after
 // the restore every parameter the host sees is refreshed, also when the value did not change inside (item 8).

@@ -1,5 +1,5 @@
 #pragma once
-// A measured dataset in the format "rosin-measurements/1" (shared/spec/measurements.md): the rig, the
+// A measured dataset in the format "rosin-measurements/1" (Resources/docs/measurements.md): the rig, the
 // channels of every trial file and the trials themselves. Plain data, JUCE-free; DatasetReader fills it from
 // dataset.json and DatasetWriter writes it back.
 #include <cstdint>

@@ -1,6 +1,6 @@
 #pragma once
 // Reading and validating a dataset's description, dataset.json, in the format "rosin-measurements/1"
-// (shared/spec/measurements.md). Every file that follows the spec is accepted (unknown extra fields
+// (Resources/docs/measurements.md). Every file that follows the spec is accepted (unknown extra fields
 // included); anything else throws DatasetError naming the file, the field and what was expected:
 //     data/scan/dataset.json: field "trials[3].gesture.acceleration": expected a non-zero number (m/s^2) but
 //     got nothing (the field is required)

@@ -112,7 +112,7 @@ std::vector<Effect> makeCatalog()
                                               .min = 0.0,
                                               .max = 2.0,
                                               .meaning = "fractional static-limit gain after a 50 ms hold"};
-    // Signature families (issue 16 item 4): an effect is named by what it does, not by one formula. Rosin's
+    // Signature families: an effect is named by what it does, not by one formula. Rosin's
     // own synth-data draws the first form (draw range 0..0), so its datasets stay as they were.
     const EffectParameter ageing =
         choiceParameter("ageingForm", {"logarithmic", "saturating"}, 0.0,
@@ -121,11 +121,11 @@ std::vector<Effect> makeCatalog()
                                                       "which terms of the loss law grow: all, the internal "
                                                       "friction (frequency-independent) or the bending term "
                                                       "(high partials)");
-    // synth-data hides seed 002's law, rod or bow, as it always did.
+    // synth-data hides [Woodhouse-thermal]'s law, rod or bow, as it always did.
     const EffectParameter jumpCurve = choiceParameter("jumpCurve", {"rod", "bow", "none"}, 1.0,
                                                       "the jump curve h(v): rosin-coated rod (eq. 13) or bow "
                                                       "(eq. 12), or none (the baseline law keeps its curve)");
-    // Drawn 0, so Rosin's own synth-data hides seed 002's law as it always did.
+    // Drawn 0, so Rosin's own synth-data hides [Woodhouse-thermal]'s law as it always did.
     const EffectParameter firstSlipMargin{.name = "firstSlipMargin",
                                           .min = 0.0,
                                           .max = 1.0,
@@ -159,34 +159,34 @@ std::vector<Effect> makeCatalog()
     return {
         {"junction-growth",
          "limiting static friction grows with the time spent sticking (contact ageing)",
-         "physics reference section 8.2",
+         "[Notes §8.2]",
          {growth, onsetTime, ageing},
          junctionGrowth,
          {gainAtReferenceHold, onsetTime, ageing},
          junctionGrowthFromSearch},
         {"breakaway-jump",
          "abrupt release at the first slip while the rosin is cold (modified thermal law)",
-         "seed 002 eqs. 6, 12, 13",
+         "[Woodhouse-thermal] eqs. 6, 12, 13",
          {jumpCurve, firstSlipMargin},
          breakawayJump},
         {"hertz-contact",
          "contact area proportional to N^(2/3) instead of N",
-         "physics reference section 8.3; seed 001 Fig. 11",
+         "[Notes §8.3]; [Galluzzo2017] Fig. 11",
          {},
          hertzContact},
         {"sticking-creep",
          "viscous-like creep during nominal sticking",
-         "seed 001 section 5.3",
+         "[Galluzzo2017] section 5.3",
          {creepResistance},
          stickingCreep},
         {"extra-string-damping",
          "string losses higher than the nominal loss law",
-         "seed 001 Table 1 (stopped-string bracket), Fig. 12c",
+         "[Galluzzo2017] Table 1 (stopped-string bracket), Fig. 12c",
          {lossScale, lossTerms},
          extraStringDamping},
         {"ambient-temperature",
          "the rosin starts warmer or colder than the rig's stated ambient temperature",
-         "seeds 000-002: thermal laws calibrated at the rig's ambient",
+         "the three source texts: thermal laws calibrated at the rig's ambient",
          {ambientOffset},
          ambientTemperature},
     };

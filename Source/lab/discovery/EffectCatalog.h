@@ -1,10 +1,10 @@
 #pragma once
-// The catalog of physical effects the discrepancy workflow can name (issue 5, item 2). Each is a real model
+// The catalog of physical effects the discrepancy workflow can name. Each is a real model
 // component that the plugin and the scans can use too, reached through SimulationModel: rosin synth-data
 // hides effects in a dataset with apply(), rosin discover tries the same apply() to explain a gap, so the
 // two cannot disagree on what an effect is. JUCE-free.
 //
-//   junction-growth      contact ageing (physics reference section 8.2): the limiting static friction grows
+//   junction-growth      contact ageing ([Notes §8.2]): the limiting static friction grows
 //                        with the time spent sticking, mu_s(t_h) = mu_s0 (1 + growth ln(1 + t_h / tau_c));
 //                        or saturating, mu_s0 (1 + growth (1 - exp(-t_h / tau_c)));
 //                        physics::JunctionGrowthLaw around the preset's law. Parameters: growth
@@ -13,26 +13,29 @@
 //                        first slips pin the gain at their hold times (tens of ms), i.e. growth and onset
 //                        only along a curve (growth x ln(1 + t / tau_c) about constant).
 //   breakaway-jump       an abrupt release at the first slip while the rosin is cold: the modified thermal
-//                        law of seed 002 (eq. 6 with the jump curve of eq. 12 bow / eq. 13 rod) replaces the
-//                        preset's law, or (jumpCurve "none") the preset's law stays; either way the contact
-//                        at rest may hold firstSlipMargin more than the law's static limit until its first
-//                        slip (physics::BreakawayMarginLaw: the jump's signature without a curve; issue 16
-//                        item 4). Parameters: jumpCurve, a choice of "rod", "bow" or "none";
-//                        firstSlipMargin (dimensionless).
-//   hertz-contact        contact area ~ N^(2/3) (one elastic contact) instead of ~ N (reference section 8.3;
-//                        seed 001 Fig. 11): the preset's contact scaling becomes Hertz. No parameter.
-//   sticking-creep       viscous-like creep during nominal sticking (seed 001 section 5.3): a dashpot in
+//                        law of [Woodhouse-thermal] (eq. 6 with the jump curve of eq. 12 bow / eq. 13 rod)
+//                        replaces the preset's law, or (jumpCurve "none") the preset's law stays; either way
+//                        the contact at rest may hold firstSlipMargin more than the law's static limit until
+//                        its first slip (physics::BreakawayMarginLaw: the jump's signature without a curve,
+//                        so an effect is named by what it does, not by one formula). Parameters: jumpCurve, a
+//                        choice of "rod", "bow" or "none"; firstSlipMargin (dimensionless).
+//   hertz-contact        contact area ~ N^(2/3) (one elastic contact) instead of ~ N ([Notes §8.3];
+//                        [Galluzzo2017] Fig. 11): the preset's contact scaling becomes Hertz. No parameter.
+//   sticking-creep       viscous-like creep during nominal sticking ([Galluzzo2017] section 5.3): a dashpot
+//   in
 //                        series with the sticking contact, physics::StickingCreepLaw. Parameter:
 //                        creepResistance (eta, N s/m; the pre-slip force is the rigid-sticking one times eta
 //                        / (2Z + eta)); the creep's work f^2 / eta heats a thermal law's contact.
-//   extra-string-damping string losses above the nominal loss law (as for a finger-stopped string, seed 001
+//   extra-string-damping string losses above the nominal loss law (as for a finger-stopped string,
+//   [Galluzzo2017]
 //                        Table 1 bracket and Fig. 12c). Parameters: lossScale (x) and lossTerms, a choice
 //                        of which terms grow: all (VoiceConfig::lossScale), the internal friction eta_F
 //                        only (frequency-independent), or the bending term eta_B only (high partials).
 //   ambient-temperature  the rosin starts warmer or colder than the rig's stated ambient (the thermal laws of
-//                        seeds 000-002 read their calibrated tables at T + offset): Preset::ambientOffset.
-//                        Parameter: ambientOffset (K). A colder rosin keeps its ambient properties until the
-//                        contact has warmed by |offset| (the calibration does not extend below ambient).
+//                        the three source texts read their calibrated tables at T + offset):
+//                        Preset::ambientOffset. Parameter: ambientOffset (K). A colder rosin keeps its
+//                        ambient properties until the contact has warmed by |offset| (the calibration does
+//                        not extend below ambient).
 //
 // Parameter names are deliberately distinct words (no "eta", "tau"): a dataset must not name its hidden
 // effect, and tests check that by searching the dataset's files for every effect and parameter name.
@@ -49,7 +52,7 @@ struct Effect
 {
     std::string name;    ///< "junction-growth", ...
     std::string summary; ///< one line: the physics
-    std::string source;  ///< where the physics comes from ("reference section 8.2")
+    std::string source;  ///< where the physics comes from ("[Notes §8.2]")
     std::vector<EffectParameter> parameters;
     /// Changes `model` as the header describes; `values` in parameter order, already checked.
     void (*change)(SimulationModel& model, const std::vector<double>& values);
@@ -66,7 +69,7 @@ const std::vector<EffectParameter>& fitCoordinates(const Effect& effect);
 /// The effect's parameter values at a point of its fit coordinates.
 std::vector<double> parameterValues(const Effect& effect, const std::vector<double>& searchValues);
 
-/// The six effects, in issue 5's order.
+/// The six effects, in the order they were specified (reports and tests list them so).
 const std::vector<Effect>& effectCatalog();
 /// Their names, in that order.
 std::vector<std::string> effectNames();

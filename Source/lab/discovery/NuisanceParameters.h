@@ -1,5 +1,5 @@
 #pragma once
-// What a laboratory knows about its rig and its measurement chain only to a tolerance (issue 16 item 1):
+// What a laboratory knows about its rig and its measurement chain only to a tolerance:
 // rosin discover calibrates these within their priors before it attributes anything to an effect. Each
 // changes the model's numbers within what the lab would quote; none changes its structure (how friction
 // depends on hold time, force or temperature), which is what the EffectCatalog's effects do, so calibration
@@ -7,12 +7,12 @@
 // lowers the friction force as a warmer rosin does), which is why the ranges are what a lab would quote and
 // no wider. Priors (min..max; factors on the nominal value unless a unit is given):
 //   contactRadius       0.87..1.15  the contact radius a_ref: estimated from a contact mark, not measured
-//                                   (seed 001 Table 2 gives one value per rig)
+//                                   ([Galluzzo2017] Table 2 gives one value per rig)
 //   rosinConductivity   0.83..1.2   the rosin's K: handbook values for rosin and similar resins scatter by
-//   rosinHeatCapacity   0.83..1.2   about this much (physics reference section 2.6), rho c likewise
+//   rosinHeatCapacity   0.83..1.2   about this much ([Notes §2.6]), rho c likewise
 //   tension             0.98..1.02  the string's tension: a lab tunes the string, so 2 % (35 cents)
 //   stringLoss          0.83..1.2   every transverse loss factor: the loss law's fit to the measured decays
-//                                   (seed 001 Table 1) is good to about this
+//                                   ([Galluzzo2017] Table 1) is good to about this
 //   sensorGain          0.97..1.03  the force gauge's sensitivity, as calibrated
 //   sensorBandwidth     0.2..0.5    the chain's low-pass corner (anti-aliasing, gauge resonance) over the
 //                                   sample rate, modelled as a second-order Butterworth; 0.5 (Nyquist) is

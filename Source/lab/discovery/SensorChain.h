@@ -1,6 +1,6 @@
 #pragma once
-// The measurement chain between the string and a dataset's trial files, as seed 001 describes its rig: force
-// gauges (piezo) behind a first-order high-pass (0.5 Hz there), and a noise floor on every channel.
+// The measurement chain between the string and a dataset's trial files, as [Galluzzo2017] describes its rig:
+// force gauges (piezo) behind a first-order high-pass (0.5 Hz there), and a noise floor on every channel.
 // rosin synth-data passes its simulated trials through it; rosin discover passes its simulations through
 // the response part (not the noise) so that measurement and model are compared like for like.
 //

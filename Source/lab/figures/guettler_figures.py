@@ -1,6 +1,6 @@
 """Guettler figures: one panel per beta over (acceleration across, force up).
 
-Seed 001 Figs. 5-8 and 12 (transient length), 15-16 (mu_s, jump at first slip).
+[Galluzzo2017] Figs. 5-8 and 12 (transient length), 15-16 (mu_s, jump at first slip).
 """
 
 import numpy as np
@@ -81,7 +81,7 @@ def guettler_diagram(scan, path):
     fig, panels = _panels(scan, "Guettler diagrams",
                           "shade: periods from the first slip to Helmholtz motion · reached in "
                           f"{style.percent(reached)} of {np.count_nonzero(scan.regime >= 0)} cells")
-    # Seed 001's shading: white = Helmholtz from the first slip, darker = longer, black = not reached.
+    # [Galluzzo2017]'s shading: white = Helmholtz from the first slip, darker = longer, black = not reached.
     cmap = plt.get_cmap("gray_r").copy()
     cmap.set_over(style.NOT_REACHED_COLOUR)
     cmap.set_under(style.NO_SLIP_COLOUR)

@@ -1,4 +1,4 @@
-"""Friction hysteresis loop: friction force against sliding speed (seed 001 Figs. 20-21)."""
+"""Friction hysteresis loop: friction force against sliding speed ([Galluzzo2017] Figs. 20-21)."""
 
 import os
 

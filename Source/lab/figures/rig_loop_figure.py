@@ -1,11 +1,11 @@
-"""Friction-coefficient hysteresis loop of the oscillator rig (seed 000 Figs. 2c and 6), for
+"""Friction-coefficient hysteresis loop of the oscillator rig ([Smith2000] Figs. 2c and 6), for
 `plot_scan.py rig-loop`.
 
 The CSV is written by `rosin render --preset cantilever --loop loop.png`:
 time,slidingSpeed,frictionForce,contactTemperature,normalForce,frictionCoefficient.
 The friction coefficient mu = f / N is drawn against the sliding speed v - v_rod,
 coloured by contact temperature (by time for the curve laws, which have none),
-with the steady-sliding curve of seed 000 eq. 2 dashed, as in Fig. 2c.
+with the steady-sliding curve of [Smith2000] eq. 2 dashed, as in Fig. 2c.
 """
 
 import csv
@@ -29,7 +29,7 @@ def read_rig_loop(path):
 
 
 def steady_curve(speed):
-    """Seed 000 eq. 2, the traditional steady-sliding curve, opposing the sliding."""
+    """[Smith2000] eq. 2, the traditional steady-sliding curve, opposing the sliding."""
     v = np.abs(speed)
     return -np.sign(speed) * (0.4 * np.exp(-v / 0.01) + 0.45 * np.exp(-v / 0.1) + 0.35)
 
@@ -63,7 +63,7 @@ def rig_loop_figure(loop, out, title):
     ax.legend(loc="best", frameon=False)
     fig.suptitle(title or "Friction coefficient against sliding speed")
     ax.set_title(f"t = {loop['time'].min():.4g} … {loop['time'].max():.4g} s · {len(x)} samples · "
-                 "seed 000 Fig. 2c runs anticlockwise", color="#333333", fontsize=9)
+                 "[Smith2000] Fig. 2c runs anticlockwise", color="#333333", fontsize=9)
     fig.savefig(out, dpi=150)
     plt.close(fig)
     return out

@@ -15,7 +15,7 @@ import numpy as np
 
 FORMAT = "rosin-scan/1"
 
-# rosin::lab::regimeName, in the order of rosin::lab::allRegimes().
+# rosin::analysis::regimeName, in the order of rosin::analysis::allRegimes().
 REGIMES = ("helmholtz", "s-motion", "double-slipping", "multiple-slipping",
            "raucous", "alf", "constant-slipping", "no-slip")
 

@@ -25,7 +25,7 @@ plt.rcParams.update({
     "axes.spines.right": False,
 })
 
-# Seed 001 Fig. 3 uses one symbol per regime; Helmholtz gets the boldest one
+# [Galluzzo2017] Fig. 3 uses one symbol per regime; Helmholtz gets the boldest one
 # because the Helmholtz region is what a Schelleng diagram is read for.
 # name -> (marker, colour, filled, relative size)
 REGIME_STYLE = {
@@ -46,7 +46,7 @@ REGIME_FILL = {
     "constant-slipping": "#e0e0e0", "no-slip": "#f7f7f7",
 }
 
-NOT_REACHED_COLOUR = "black"  # Guettler cap colour, as seed 001 Figs. 5-8: white is a perfect start
+NOT_REACHED_COLOUR = "black"  # Guettler cap colour, as [Galluzzo2017] Figs. 5-8: white is a perfect start
 NO_SLIP_COLOUR = "#a6cee3"      # never slipped: pale blue
 WEDGE_COLOUR = "#e41a1c"
 MAX_LINE_COLOUR = "#c51b7d"     # Schelleng maximum force and the fitted upper edge

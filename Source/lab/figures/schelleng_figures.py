@@ -1,6 +1,6 @@
 """Schelleng figures: regime diagram, colour maps and the A/B comparison.
 
-Axes are log-log (beta across, bow force up), as in seed 001 Fig. 3.
+Axes are log-log (beta across, bow force up), as in [Galluzzo2017] Fig. 3.
 """
 
 import numpy as np
@@ -155,7 +155,7 @@ def schelleng_map(scan, path, spec):
 
 
 def schelleng_compare(a, b, names, path):
-    """Seed 001 Figs. 9-11: where Helmholtz motion is found in A, B, both, neither;
+    """[Galluzzo2017] Figs. 9-11: where Helmholtz motion is found in A, B, both, neither;
     B's regime symbol on each cell, ringed where the regime changed."""
     changes = style.meta_changes(a.meta, b.meta)
     fig, ax = _new_axes(a, "Schelleng comparison", style.changes_text(changes), details=False)

@@ -1,6 +1,6 @@
 #pragma once
-// The values along one axis of a scan grid: linearly spaced (Guettler's N-a plane, seed 001 section 3.2) or
-// logarithmically spaced (Schelleng's beta and force, section 3.1), ends included.
+// The values along one axis of a scan grid: linearly spaced (Guettler's N-a plane, [Galluzzo2017]
+// section 3.2) or logarithmically spaced (Schelleng's beta and force, section 3.1), ends included.
 #include <cstddef>
 #include <vector>
 

@@ -1,14 +1,14 @@
 #pragma once
 // The edges of the Helmholtz region of a Schelleng scan, fitted as straight lines on log-log axes
 // (log10 F = intercept + slope log10 beta), to compare with Schelleng's F_max ~ 1/beta and F_min ~ 1/beta^2
-// (reference 6.1-6.2).
+// ([Notes §6.1-6.2]).
 //
 // Per beta column: the longest contiguous run of Helmholtz cells along the (ascending) forces (ties: the
 // lowest). Its lower edge lies between the force below the run and the run's first force, its upper edge
 // between the run's last force and the one above: the geometric mean of the two, the best estimate on a
 // log-spaced axis. A run that reaches the grid's first or last force has no edge there (the boundary is
 // outside the grid) and the column gives no point for that edge. Only "helmholtz" counts: Schelleng's theory
-// is about Helmholtz motion, and S-motion occurs mostly beyond F_max (reference 7.4), so counting it would
+// is about Helmholtz motion, and S-motion occurs mostly beyond F_max ([Notes §7.4]), so counting it would
 // push the upper edge beyond the limit being measured. A fit needs two columns with an edge.
 #include <cstddef>
 #include <optional>

@@ -48,7 +48,7 @@ double transientPeriod(const analysis::RegimeAnalysis& steady, double nominal)
         std::abs(steady.measuredPeriod / nominal - 1.0) < analysis::regime_thresholds::kPeriodTolerance;
     return helmholtzType && steady.slipsPerCycle == 1 && near ? steady.measuredPeriod : nominal;
 }
-// Reference 7.3 on the slips (flyback episodes, or onsets found in the bridge force), judged over the first
+// [Notes §7.3] on the slips (flyback episodes, or onsets found in the bridge force), judged over the first
 // 2 x cap periods after the first slip: the Helmholtz run must start within the cap and last to the end of
 // that window. The bow keeps accelerating (Guettler) and F_min grows with the bow speed, so "lasting to the
 // end of the trial" would make the transient depend on the trial's length; this window does not, as long as
@@ -71,7 +71,7 @@ void addTransientInWindow(Slips slips, OnsetOf onsetOf, std::size_t samples, con
     t.capPeriods = kTransientCapPeriods;
     t.windowEnd = end;
     const auto transient = analysis::measureTransient(slips, transientPeriod(late, nominal), t);
-    // Fewer than cap periods of trial after the first slip: seed 001's "x" pixel, not a result.
+    // Fewer than cap periods of trial after the first slip: [Galluzzo2017]'s "x" pixel, not a result.
     if (!transient.insufficientData)
         r.transientPeriods = transient.periods;
     r.failure = transient.failure;

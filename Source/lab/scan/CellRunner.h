@@ -6,7 +6,7 @@
 // Preparing a thermal law calibrates it (~25 ms, longer than a 0.5 s trial), so each worker prepares one
 // voice and the lanes' friction once (physics::makeLaneFriction) and returns a lane to rest before each
 // cell: a cell's result depends neither on which cells the runner computed before nor on which cells ran
-// beside it (tests/scan checks both byte for byte).
+// beside it (tests/lab/scan/ checks both byte for byte).
 #include <array>
 #include <cstddef>
 #include <functional>

@@ -1,7 +1,7 @@
 #pragma once
 // Runs a helper program (the figure scripts) from an argument vector, never through a shell, so that a path
 // with quotes, spaces, $(...) or newlines reaches the program as one argument and runs nothing else
-// (issue 19). POSIX posix_spawnp: the program is looked up on PATH like a shell would.
+//. POSIX posix_spawnp: the program is looked up on PATH like a shell would.
 #include <string>
 #include <vector>
 

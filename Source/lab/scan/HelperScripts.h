@@ -1,5 +1,5 @@
 #pragma once
-// Where Rosin's figure scripts are (issue 19): found relative to the running executable, so an installed or
+// Where Rosin's figure scripts are: found relative to the running executable, so an installed or
 // copied `rosin` and the build tree both work without the source tree.
 //   1. the environment variable that names the script, when set and non-empty;
 //   2. EXE_DIR/../share/rosin/figures/NAME (an installed rosin: PREFIX/bin/rosin);

@@ -1,6 +1,6 @@
 #pragma once
 // The instrument a scan bows: one string on a body with one friction law and contact, and the model switches
-// of seed 001 Figs. 9-12, resolved from a preset so that a scan specification file describes the model
+// of [Galluzzo2017] Figs. 9-12, resolved from a preset so that a scan specification file describes the model
 // completely (a changed preset file cannot silently change a resumed scan).
 #include <memory>
 #include <string>
@@ -23,8 +23,9 @@ struct ModelSpec
     physics::ContactParameters contact = physics::galluzzoContact();
     bool torsion = true;
     bool bendingStiffness = true;
-    /// The open string with the intrinsic damping of a finger-stopped one (seed 001 Fig. 12c: eta_F from the
-    /// bracket of Table 1). The scan bows open strings, so the voice's own "stopped" switch never fires.
+    /// The open string with the intrinsic damping of a finger-stopped one ([Galluzzo2017] Fig. 12c: eta_F
+    /// from the bracket of Table 1). The scan bows open strings, so the voice's own "stopped" switch never
+    /// fires.
     bool fingerDamping = false;
 };
 

@@ -38,7 +38,7 @@ const char* trialEndName(GuettlerTrialEnd end) noexcept;
 enum class Classification
 {
     State,      ///< from the solver's sticking state and bow-point velocity (full flybacks)
-    BridgeForce ///< from the bridge force alone, as seed 001 treats measured and simulated trials alike
+    BridgeForce ///< from the bridge force alone, as [Galluzzo2017] treats measured and simulated trials alike
 };
 /// "state", "bridge-force".
 const char* classificationName(Classification c) noexcept;
@@ -64,12 +64,12 @@ struct ScanSpec
     std::size_t cellCount() const noexcept { return betas.size() * forces.size() * second.size(); }
 };
 
-/// Seed 001's grids (section 3): Schelleng 20 x 20, force 0.1-3 N and beta 0.02-0.18 log-spaced, bow speed
-/// 0.05 m/s, 1 s trials with a 0.1 s ramp; Guettler 20 x 20, force 0.4-3.2 N and acceleration
-/// 0.08-3.2 m/s^2 linearly spaced at the eight betas of Fig. 5, 0.5 s trials. Model: the galluzzo-rig preset.
+/// [Galluzzo2017]'s grids (section 3): Schelleng 20 x 20, force 0.1-3 N and beta 0.02-0.18 log-spaced, bow
+/// speed 0.05 m/s, 1 s trials with a 0.1 s ramp; Guettler 20 x 20, force 0.4-3.2 N and acceleration 0.08-3.2
+/// m/s^2 linearly spaced at the eight betas of Fig. 5, 0.5 s trials. Model: the galluzzo-rig preset.
 ScanSpec defaultSpec(ScanKind kind);
 
-/// The eight bow positions of seed 001 Fig. 5.
+/// The eight bow positions of [Galluzzo2017] Fig. 5.
 const std::vector<double>& seedGuettlerBetas();
 
 /// Indices of a cell along the three axes.

@@ -14,7 +14,7 @@ namespace
 constexpr double kPi = std::numbers::pi;
 constexpr double kReferenceForce = 1.0; ///< N, where mu_s is read (force-independent for Coulomb contacts)
 constexpr double kClassicalDynamicToStatic = 0.35 / 1.2;
-constexpr int kHarmonics = 400; ///< reference 6.2 evaluates (6.5) with 400 harmonics
+constexpr int kHarmonics = 400; ///< [Notes §6.2] evaluates (6.5) with 400 harmonics
 constexpr int kTimeSteps = 2000;
 } // namespace
 

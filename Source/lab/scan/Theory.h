@@ -1,21 +1,21 @@
 #pragma once
-// The idealised playability limits a scan is compared with (physics reference 6), evaluated for the scan's
+// The idealised playability limits a scan is compared with ([Notes §6]), evaluated for the scan's
 // model:
 //   Schelleng F_max(beta) = c / beta,    c = 2 Z0 v_b / (mu_s - mu_d)                         (eq. 6.2)
 //   F_min(beta) = d / beta^2 from the body's admittance Y (eq. 6.5, small-beta approximation):
 //     d = 2 v_b Z0^2 / (pi^2 dmu) max_t [ Re sum Y(n w0)/n^2 - Re sum (-1)^n Y(n w0) e^{i n w0 t}/n^2 ],
 //   which for a dashpot Y = 1/R is Raman's Z0^2 v_b / (2 R dmu) (eq. 6.3); the "bridge resistance" reported
 //   is the dashpot R that gives the same d. A rigid bridge (Y = 0) gives d = 0 and no R.
-//   The same with the model's total losses (reference 6.2, "decided"): the body's Y plus the string's own
+//   The same with the model's total losses ([Notes §6.2], "decided"): the body's Y plus the string's own
 //   losses as the bridge conductance that would damp each mode alike, G_n = pi n eta_n / (2 Z0) (a bridge of
 //   conductance G reflects 1 - 2 Z0 G of a wave, so mode n loses 4 Z0 G f0 of its energy a second, i.e.
 //   eta_n = 2 Z0 G / (pi n)). Torsion's losses are not folded in (their place in F_min is not settled: Z0^2
-//   -> Z0 Z_eff by Schelleng, less by simulation, reference 6.2). Guettler's wedge a_low < a <= a_up, each
+//   -> Z0 Z_eff by Schelleng, less by simulation, [Notes §6.2]). Guettler's wedge a_low < a <= a_up, each
 //   proportional to F (eq. 6.6), with P Z0 = 2 x string mass.
-// Z0 = sqrt(T m) of the transverse string (torsion not folded in, as in the reference's formulas).
+// Z0 = sqrt(T m) of the transverse string (torsion not folded in, as in the formulas of [Notes §6]).
 //
 // mu_s is the law's limiting static coefficient at 1 N, at ambient (FrictionLaw::staticCoefficient after
-// prepare). mu_d: the curve laws' limit at high sliding speed (0.35 for both, seed 001 eqs. 1-2); the
+// prepare). mu_d: the curve laws' limit at high sliding speed (0.35 for both, [Galluzzo2017] eqs. 1-2); the
 // thermal laws are calibrated so that steady sliding reproduces a curve, and we take the classical curve's
 // ratio mu_d/mu_s = 0.35/1.2 of their own mu_s (exact for plastic and viscous, calibrated on the classical
 // curve; an assumption for the modified laws, whose power-law steady curve has no finite limit).

@@ -13,7 +13,7 @@ namespace rosin::scan
 namespace
 {
 // The periods the analysis may measure a transient against, as shares of the nominal one, and the share of
-// such a period an interval may differ by and still be a Helmholtz period (reference 7.3).
+// such a period an interval may differ by and still be a Helmholtz period ([Notes §7.3]).
 constexpr double kLongestPeriod = 1.0 + analysis::regime_thresholds::kPeriodTolerance;
 constexpr double kShortestPeriod = 1.0 - analysis::regime_thresholds::kPeriodTolerance;
 const double kIntervalTolerance = analysis::TransientOptions{}.tolerance;

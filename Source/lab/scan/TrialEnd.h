@@ -10,7 +10,8 @@
 //    than 1.155 P) and ends at or after t1 + cap x 1.1 P, or no full flyback has come for longer than
 //    1.155 P when that time is past, every run still to come starts too late. Both must happen within
 //    2 x cap x 0.9 P of t1, inside the window for any period, where they break every run the analysis
-//    could find. Failed attacks (most cells of seed 001's Guettler diagrams) end about 20 periods sooner.
+//    could find. Failed attacks (most cells of [Galluzzo2017]'s Guettler diagrams) end about 20 periods
+//    sooner.
 // What the analysis then reports from the end of the trial (the regime of its last 20 periods, the
 // failure type) describes the motion up to the decision.
 #include <cstddef>

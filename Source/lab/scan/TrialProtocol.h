@@ -1,11 +1,11 @@
 #pragma once
 // The bow gesture of one scan trial, sample by sample.
-//   Guettler (seed 001 section 3.2; reference 6.3): constant force N at beta, bow speed v_b = a t from rest
-//   for the whole trial, uncapped (3.2 m/s^2 reaches 1.6 m/s at 0.5 s). The transient that decides the cell
-//   is over within ~20 periods (0.14 s) of the first slip, long before the speed is unusual.
-//   Schelleng (section 3.1): constant force N at beta; the bow accelerates uniformly from rest to v_b over
-//   the ramp time (0.1 s by default: 0.5 m/s^2 for 0.05 m/s, a gentle start well inside Guettler's wedge for
-//   most forces, as a bowing machine would use) and then holds v_b to the end.
+//   Guettler ([Galluzzo2017] section 3.2; [Notes §6.3]): constant force N at beta, bow speed v_b = a t from
+//   rest for the whole trial, uncapped (3.2 m/s^2 reaches 1.6 m/s at 0.5 s). The transient that decides the
+//   cell is over within ~20 periods (0.14 s) of the first slip, long before the speed is unusual. Schelleng
+//   (section 3.1): constant force N at beta; the bow accelerates uniformly from rest to v_b over the ramp
+//   time (0.1 s by default: 0.5 m/s^2 for 0.05 m/s, a gentle start well inside Guettler's wedge for most
+//   forces, as a bowing machine would use) and then holds v_b to the end.
 #include <cstddef>
 
 #include "core/physics/voice/BowedStringVoice.h"

@@ -1,9 +1,9 @@
 #pragma once
-// Model variations of seed 001 section 3.3 as scan options, applied on top of a preset's model:
+// Model variations of [Galluzzo2017] section 3.3 as scan options, applied on top of a preset's model:
 //   Fig. 9  layer thickness and Fig. 10 contact radius of the STEADY-SLIDING (calibration) contact on which
-//           the thermal laws' material functions are fitted (seed 001 Table 2, last column: 10 um, 500 um at
-//           3 N; the seed varies 10 -> 15 um and 0.5 -> 0.7 mm). The bowing contact keeps the preset's values
-//           (a preset's "contact" object changes those).
+//           the thermal laws' material functions are fitted ([Galluzzo2017] Table 2, last column: 10 um, 500
+//           um at 3 N; [Galluzzo2017] varies 10 -> 15 um and 0.5 -> 0.7 mm). The bowing contact keeps the
+//           preset's values (a preset's "contact" object changes those).
 //   Fig. 11 Coulomb or Hertz contact-area scaling of the bowing contact.
 //   Fig. 12 c-f: finger-stopped damping, rigid bridge, no torsion, no bending stiffness.
 #include <optional>

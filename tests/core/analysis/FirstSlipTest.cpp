@@ -1,4 +1,4 @@
-// mu_s and the jump at the first slip of a constant-acceleration trial (seed 001 Figs. 15-16), from a
+// mu_s and the jump at the first slip of a constant-acceleration trial ([Galluzzo2017] Figs. 15-16), from a
 // synthetic bridge force with known values, through 0.3 % noise and a 0.5 Hz sensor high-pass.
 #include <gtest/gtest.h>
 
@@ -64,7 +64,7 @@ TEST(FirstSlip, SyntheticTrialThroughNoiseAndHighPass)
     {
         double muS, jump, N, beta, t1;
     };
-    // The seed's measured average mu_s 0.66 and the classical curve's 1.2; small and large jumps.
+    // [Galluzzo2017]'s measured average mu_s 0.66 and the classical curve's 1.2; small and large jumps.
     for (const Case c : {Case{0.66, 0.30, 1.0, 0.0899, 0.030}, Case{1.2, 0.8, 1.73, 0.0899, 0.045},
                          Case{0.66, 0.12, 0.84, 0.0357, 0.020}, Case{0.9, 0.5, 2.0, 0.18, 0.060}})
     {

@@ -1,4 +1,4 @@
-// The steady-state labels of reference §7.4 on canonical signals whose regime is known by construction,
+// The steady-state labels of [Notes §7.4] on canonical signals whose regime is known by construction,
 // through both entry points: the solver's state (sticking flag + bridge force) and the bridge force alone
 // (with 0.3 % noise and a 0.5 Hz sensor high-pass).
 #include <gtest/gtest.h>
@@ -60,7 +60,7 @@ TEST(RegimeClassifier, SawtoothIsHelmholtz)
 }
 
 // A flattened Helmholtz motion (period 6 % long, as near F_max or on a stopped string) is still Helmholtz,
-// reported as outside the reference's +-3 % pitch band.
+// reported as outside the +-3 % pitch band of [Notes §7.4].
 TEST(RegimeClassifier, FlattenedSawtoothIsHelmholtzWithPitchReported)
 {
     const auto s = test::stickSlip(kLength, 1.06 * kP, {0.0}, {1.0}, 1.0, static_cast<std::size_t>(0.1 * kP));

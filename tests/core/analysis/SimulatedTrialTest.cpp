@@ -146,7 +146,7 @@ TEST(SimulatedTrial, PartialSlipsAreNotFlybacks)
         fromForce.slipsPerPeriod, fromForce.sawtoothness);
 }
 
-// Above Schelleng's maximum force F_max = 2 Z0 v_b / (beta (mu_s - mu_d)) (reference eq. 6.2; 0.64 N here)
+// Above Schelleng's maximum force F_max = 2 Z0 v_b / (beta (mu_s - mu_d)) ([Notes] eq. 6.2; 0.64 N here)
 // Helmholtz motion cannot last: both routes, state and noisy force alone, must say so, and agree.
 TEST(SimulatedTrial, AboveMaximumForceNotHelmholtzByEitherRoute)
 {

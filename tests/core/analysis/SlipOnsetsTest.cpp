@@ -1,4 +1,4 @@
-// Slip onsets from the solver's state and from the bridge force alone (reference §7.2).
+// Slip onsets from the solver's state and from the bridge force alone ([Notes §7.2]).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Transient length in periods from the first slip to lasting Helmholtz motion (reference §7.3, seed 001
+// Transient length in periods from the first slip to lasting Helmholtz motion ([Notes §7.3], [Galluzzo2017]
 // Figs. 5-8), on onset sequences built with a known number of irregular periods.
 #include <gtest/gtest.h>
 
@@ -49,8 +49,8 @@ TEST(TransientLength, IrregularPeriodsThenHelmholtzCountExactly)
     }
 }
 
-// Twenty or more periods before Helmholtz motion is "not reached" (seed 001's black pixel); Helmholtz that
-// does not last to the end of the window does not count either.
+// Twenty or more periods before Helmholtz motion is "not reached" ([Galluzzo2017]'s black pixel); Helmholtz
+// that does not last to the end of the window does not count either.
 TEST(TransientLength, CapAndLastingRun)
 {
     Builder atCap, beyond;

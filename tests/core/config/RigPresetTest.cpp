@@ -1,5 +1,5 @@
-// Presets with a "rig" (seed 000's oscillator rig): the shipped cantilever preset carries the seed's rig and
-// the calibrated values, and every bad rig field is named with its expectation.
+// Presets with a "rig" ([Smith2000]'s oscillator rig): the shipped cantilever preset carries [Smith2000]'s
+// rig and the calibrated values, and every bad rig field is named with its expectation.
 #include <gtest/gtest.h>
 
 #include "core/config/ConfigError.h"
@@ -13,15 +13,15 @@ namespace rosin::config
 namespace ROSIN_FILE_LOCAL
 {
 
-TEST(RigPreset, CantileverIsSeed000sRig)
+TEST(RigPreset, CantileverIsTheRosinTribologyRig)
 {
     const Preset p = loadPreset("cantilever");
     ASSERT_TRUE(p.rig.has_value());
-    EXPECT_DOUBLE_EQ(p.rig->oscillator.frequency, 108.0);    // seed 000: first bending mode
-    EXPECT_DOUBLE_EQ(p.rig->oscillator.qualityFactor, 20.0); // seed 000: Q 20
-    EXPECT_DOUBLE_EQ(p.rig->normalForce, 6.3);               // seed 000 Fig. 2
+    EXPECT_DOUBLE_EQ(p.rig->oscillator.frequency, 108.0);    // [Smith2000]: first bending mode
+    EXPECT_DOUBLE_EQ(p.rig->oscillator.qualityFactor, 20.0); // [Smith2000]: Q 20
+    EXPECT_DOUBLE_EQ(p.rig->normalForce, 6.3);               // [Smith2000] Fig. 2
     EXPECT_DOUBLE_EQ(p.rig->rodSpeed, 0.042);
-    // The calibrated mass of OscillatorRigParameters (tests/physics/rig/TraditionalCurveRigTest.cpp
+    // The calibrated mass of OscillatorRigParameters (tests/core/physics/rig/TraditionalCurveRigTest.cpp
     // reproduces it).
     EXPECT_DOUBLE_EQ(p.rig->oscillator.modalMass, physics::OscillatorRigParameters{}.modalMass);
     EXPECT_EQ(p.friction, "classical"); // eq. 2, the traditional curve

@@ -1,5 +1,5 @@
 // The body at the bridge drains energy from the string: partial n of an open string decays faster than on a
-// rigid bridge, by the body's loss factor eta_body = 2 Z0 Re Y(f_n) / (pi n) (reference §5.1, from the
+// rigid bridge, by the body's loss factor eta_body = 2 Z0 Re Y(f_n) / (pi n) ([Notes §5.1], from the
 // reflection coefficient at the bridge), i.e. an extra amplitude decay rate pi f_n eta_body. Partials near
 // strong body resonances (large Re Y) decay fastest; a partial in a gap of the admittance hardly changes.
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
-// A finger stop shortens the vibrating length to r L and, as seed 001 Table 1 says for the finger-stopped
-// string, raises eta_F from 23 to 69 (x 1e-5): partials sit at n f0/r sqrt(1 + B n^2 / r^2) and decay at the
-// stopped loss law's rate.
+// A finger stop shortens the vibrating length to r L and, as [Galluzzo2017] Table 1 says for the
+// finger-stopped string, raises eta_F from 23 to 69 (x 1e-5): partials sit at n f0/r sqrt(1 + B n^2 / r^2)
+// and decay at the stopped loss law's rate.
 #include <gtest/gtest.h>
 
 #include <cmath>

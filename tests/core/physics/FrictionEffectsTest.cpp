@@ -1,4 +1,4 @@
-// The friction effects beyond the seeds' laws (reference §8, the discrepancy workflow's catalog), each
+// The friction effects beyond the source texts' laws ([Notes §8], the discrepancy workflow's catalog), each
 // against an independent expectation: the junction-growth law slips where mu_s0 (1 + G ln(1 + t_h/tau)) says;
 // the creeping contact obeys its dashpot exactly and, on an ideal string, reproduces the pre-slip rise of a
 // spring k = P / (L beta (1 - beta)) dragged through a dashpot eta; a loss scale s makes the free decay E(t)
@@ -71,8 +71,8 @@ TEST(JunctionGrowth, ASlipErasesTheMemory)
     EXPECT_DOUBLE_EQ(law.growthFactor(), 1.0);
 }
 
-// The saturating form (issue 16's signature families): 1 + G (1 - e^{-t/tau}) at one hold time, and a long
-// hold stays below 1 + G where the logarithmic form has gone past it.
+// The saturating form (one of the effect's signature families): 1 + G (1 - e^{-t/tau}) at one hold time, and
+// a long hold stays below 1 + G where the logarithmic form has gone past it.
 TEST(JunctionGrowth, SaturatingFormApproachesItsLimit)
 {
     JunctionGrowthLaw law(classical(), 0.2, 0.002, AgeingForm::Saturating);

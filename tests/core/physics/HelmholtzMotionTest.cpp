@@ -1,5 +1,5 @@
 // Steady bowing inside Schelleng's limits settles into Helmholtz motion: one slip per period, period 1/f0,
-// slip for a fraction beta of the period (reference §6.1, eq. 6.1; euphonics 9.3.1).
+// slip for a fraction beta of the period ([Notes §6.1], eq. 6.1; euphonics 9.3.1).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -90,11 +90,11 @@ void expectHelmholtz(Curve curve, const char* name, double force, double beta, b
     expectHelmholtzWith(cfg, std::make_unique<Law>(curve, name), name, force, beta);
 }
 
-// The cello D string with the cello body, bowed at 0.05 m/s and beta = 0.1 (seed 001's Schelleng grid speed).
-// Schelleng's maximum force 2 Z0 vb / (beta (mu_s - mu_d)) is 0.64 N for the classical curve and 1.37 N for
-// the reconstructed one (reference §6.1). Near the limits the string is bistable (Helmholtz or double
-// slipping, decided by the start: seed 001 calls such sensitive dependence genuine); each force below sits
-// inside the region that a scan over 0.2-2 N found for its law.
+// The cello D string with the cello body, bowed at 0.05 m/s and beta = 0.1 ([Galluzzo2017]'s Schelleng grid
+// speed). Schelleng's maximum force 2 Z0 vb / (beta (mu_s - mu_d)) is 0.64 N for the classical curve and 1.37
+// N for the reconstructed one ([Notes §6.1]). Near the limits the string is bistable (Helmholtz or double
+// slipping, decided by the start: [Galluzzo2017] calls such sensitive dependence genuine); each force below
+// sits inside the region that a scan over 0.2-2 N found for its law.
 TEST(HelmholtzMotion, ClassicalCurve)
 {
     expectHelmholtz<ClassicalFrictionLaw>(ClassicalCurve{}, "classical", 0.3, 0.1, true);

@@ -1,6 +1,6 @@
 // The linear string on a rigid bridge, driven by a force impulse at the bow: mode frequencies against the
-// stiff-string formula f_n = n f0 sqrt(1 + B n^2) (reference eq. 4.2), decay rates against the three-term
-// loss law (reference eq. 4.1, seed 001 Table 1), and torsional modes at n c_t / (2L).
+// stiff-string formula f_n = n f0 sqrt(1 + B n^2) ([Notes] eq. 4.2), decay rates against the three-term
+// loss law ([Notes] eq. 4.1, [Galluzzo2017] Table 1), and torsional modes at n c_t / (2L).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,8 +1,9 @@
 // Quasi-static pre-slip under a constant-acceleration bow (Guettler's gesture): before the first slip the
 // string is dragged with the bow, y = a t^2/2 at the bow, and the bridge force follows the static relation
-// f_br = P y / (beta L) (seed 002 eqs. 3-5). With torsion the string also rolls, so the transverse share of
-// the bow-point displacement is Zt ct / (Zt ct + Z0 c). The first slip happens where the friction curve
-// says: mu_s = f_br / ((1 - beta) N) = 1.2 (classical) or 0.75 (reconstructed) (seed 001 Fig. 13).
+// f_br = P y / (beta L) ([Woodhouse-thermal] eqs. 3-5). With torsion the string also rolls, so the transverse
+// share of the bow-point displacement is Zt ct / (Zt ct + Z0 c). The first slip happens where the friction
+// curve says: mu_s = f_br / ((1 - beta) N) = 1.2 (classical) or 0.75 (reconstructed) ([Galluzzo2017] Fig.
+// 13).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -73,7 +74,8 @@ PreSlipRun runGuettler(std::unique_ptr<FrictionLaw> law, bool torsion, bool bend
     for (std::size_t i = t.size() / 5; i < t.size(); ++i)
     {
         const double y = ratio * a * t[i] * t[i] / 2.0;
-        // Ideal string: f_br = P y / (beta L) (seed 002 eq. 4). Stiff string: f_br = (1 - beta) y / C_static.
+        // Ideal string: f_br = P y / (beta L) ([Woodhouse-thermal] eq. 4). Stiff string: f_br = (1 - beta) y
+        // / C_static.
         const double expected =
             bending ? (1.0 - beta) * y / stiffStringCompliance(s, beta) : s.tension * y / (beta * s.length);
         run.worstRelativeError = std::max(run.worstRelativeError, std::abs(F[i] / expected - 1.0));

@@ -29,7 +29,7 @@ double helmholtzPeriod(double fs)
 
 TEST(SampleRateConvergence, FirstSlipTime)
 {
-    // Guettler's gesture of the seed's rig: a = 1.56 m/s^2, 1 N, beta = 0.0899.
+    // Guettler's gesture on the Galluzzo rig of [Galluzzo2017]: a = 1.56 m/s^2, 1 N, beta = 0.0899.
     const auto slow =
         test::bowAccelerating(celloD(), std::make_unique<ClassicalFrictionLaw>(ClassicalCurve{}, "c"),
                               44100.0, 1.0, 1.56, 0.0899, 0.2);

@@ -1,10 +1,11 @@
-// The thermal laws inside the bowed string (seed 000, seed 001 §2, seed 002):
+// The thermal laws inside the bowed string ([Smith2000], [Galluzzo2017] §2, [Woodhouse-thermal]):
 //  * plastic: first slip where tau_y(ambient) A_rig / N says, 1.2 (a_rig^2/N_rig) / (a_cal^2/N_cal)
 //    (0.90 for the Galluzzo rig, 1.2 when the calibration disc is 0.433 mm at 3 N), and no jump at first
-//    slip at any force (seed 002: "this model is unable to give such an initial jump");
+//    slip at any force ([Woodhouse-thermal]: "this model is unable to give such an initial jump");
 //  * modified (bow fit): an abrupt jump of bridge force at the first slip at high force, none at low force
-//    (seed 002, Fig. 5 and Fig. 9 discussion);
-//  * viscous: forward slipping, the string overtaking the bow (seed 000, seed 002 Fig. 4); plastic never.
+//    ([Woodhouse-thermal], Fig. 5 and Fig. 9 discussion);
+//  * viscous: forward slipping, the string overtaking the bow ([Smith2000], [Woodhouse-thermal] Fig. 4);
+//  plastic never.
 #include <gtest/gtest.h>
 
 #include "core/physics/laws/FrictionLawFactory.h"
@@ -27,7 +28,7 @@ VoiceConfig galluzzoRig()
 
 struct FirstSlip
 {
-    double muStatic = 0.0; ///< bridge force before the first slip / ((1 - beta) N), seed 001 Fig. 13
+    double muStatic = 0.0; ///< bridge force before the first slip / ((1 - beta) N), [Galluzzo2017] Fig. 13
     double jump = 0.0;     ///< largest one-sample fall of bridge force around the first slip, / N
 };
 
@@ -58,7 +59,7 @@ TEST(ThermalVoice, PlasticFirstSlipAtCalibratedStaticCoefficient)
     const double expected = 1.2 * areaPerNewton(contact.rig) / areaPerNewton(contact.calibration);
     const auto base = guettlerFirstSlip(FrictionModel::Plastic, contact, 1.0);
     EXPECT_NEAR(base.muStatic, expected, 0.02 * expected);
-    contact.calibration.radius = 0.433e-3; // seed 001 Fig. 14: the radius at which the two rigs agree
+    contact.calibration.radius = 0.433e-3; // [Galluzzo2017] Fig. 14: the radius at which the two rigs agree
     const auto matched = guettlerFirstSlip(FrictionModel::Plastic, contact, 1.0);
     EXPECT_NEAR(matched.muStatic, 1.2, 0.02 * 1.2);
     std::printf(
@@ -78,7 +79,7 @@ TEST(ThermalVoice, ModifiedLawJumpsAtHighForceOnly)
     const auto high = guettlerFirstSlip(FrictionModel::ModifiedBow, galluzzoContact(), 3.0);
     EXPECT_LT(low.jump, 0.005);
     EXPECT_GT(high.jump, 0.1);
-    // Static limit K Y(ambient) h(0) = mu_steady(0) = 0.2 * 0.011^-0.4 (seed 002 eqs. 9, 11).
+    // Static limit K Y(ambient) h(0) = mu_steady(0) = 0.2 * 0.011^-0.4 ([Woodhouse-thermal] eqs. 9, 11).
     EXPECT_NEAR(high.muStatic, 0.2 * std::pow(0.011, -0.4), 0.02 * 1.215);
     std::printf("[figure] modified-bow first-slip jump / N: %.4f at 0.3 N, %.4f at 3 N; mu_s %.4f\n",
                 low.jump, high.jump, high.muStatic);

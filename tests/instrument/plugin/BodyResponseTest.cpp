@@ -1,4 +1,4 @@
-// The measured body response (issue 18, item 3), with a synthetic response (no third-party data): what the
+// The measured body response, with a synthetic response (no third-party data): what the
 // host hears is the bridge force convolved with it (checked against a direct time-domain convolution of the
 // plugin's own bridge-force output), loading while playing allocates nothing on the audio thread, the state
 // keeps the file's path and content hash, and a missing or broken file says what is wrong and keeps the modal

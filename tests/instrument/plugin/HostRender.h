@@ -2,8 +2,8 @@
 // The plugin's processor driven as a host drives it, offline: a MIDI sequence (timestamps in seconds) and
 // optional automation lanes, cut into blocks of any size, parameters set through the host's parameter objects
 // and engine builds serviced between blocks, as the message thread's timer would. The tests' host; the
-// command line renders through engine::OfflineInstrument, which tests/plugin/OfflineRenderTest.cpp holds to
-// this output bit for bit.
+// command line renders through engine::OfflineInstrument, which tests/instrument/plugin/OfflineRenderTest.cpp
+// holds to this output bit for bit.
 #include <juce_audio_basics/juce_audio_basics.h>
 
 #include "instrument/engine/AutomationLanes.h"

@@ -1,4 +1,4 @@
-// One engine for every front end (issue 21): `rosin render --midi` plays through engine::OfflineInstrument,
+// One engine for every front end: `rosin render --midi` plays through engine::OfflineInstrument,
 // not through the plugin's processor. What it writes must still be exactly what the plugin plays: for every
 // factory program, with automation that rebuilds the instrument, with a measured body response, at another
 // sample rate and block size, the offline render and the processor driven as a host drives it agree sample

@@ -1,4 +1,4 @@
-// Playable without a MIDI controller (issue 18, item 5): the editor's on-screen keyboard plays the strings
+// Playable without a MIDI controller: the editor's on-screen keyboard plays the strings
 // through a lock-free queue, without allocating on the audio thread; and before any audio runs the lanes and
 // the Schelleng diagram already know the instrument's strings.
 #include <gtest/gtest.h>

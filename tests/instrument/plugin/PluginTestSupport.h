@@ -12,7 +12,7 @@
 namespace rosin::test
 {
 
-/// The factory presets the plugin offers as programs: every preset but a rig's (seed 000's oscillator).
+/// The factory presets the plugin offers as programs: every preset but a rig's ([Smith2000]'s oscillator).
 inline std::vector<std::string> instrumentPresetNames()
 {
     std::vector<std::string> names;

@@ -39,7 +39,7 @@ TEST_P(PresetRender, DemoPhraseIsFiniteAndBoundedAtThreeSampleRates)
     }
 }
 
-// Issue 18: the mezzo-forte demo phrase (velocities 80-110) peaks near -6 dBFS with every program, below the
+// Levels: the mezzo-forte demo phrase (velocities 80-110) peaks near -6 dBFS with every program, below the
 // soft clip's knee (-1.9 dBFS). Violin programs play it a twelfth up (+19 semitones: its C2-D4 become G3-A4,
 // inside the violin's range). The programs' output levels are calibrations made for this (presets/*.json
 // "outputLevel"); the test checks that they hold, within +-1.5 dB.

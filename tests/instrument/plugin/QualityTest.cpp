@@ -1,12 +1,12 @@
-// The Quality parameter (issue 22 item 4): "live" stops the strings and the body at 10 kHz
+// The Quality parameter: "live" stops the strings and the body at 10 kHz
 // (engine::kLiveBandwidthHz), which costs less (benchmarks/PluginBenchmark.cpp prints both); the full model
 // is the reference it is measured against. What live changes in the sound, measured here on sustained cello
 // notes through the plugin (default program at PitchTest's bowing, 1 N on the C string and its share on the
 // others, 0.1 m/s, beta 0.1; velocity 80, 2 s, analysed over 0.8-1.8 s), bounded with several times the
-// margin of what was measured (README "Quality"). Near a regime boundary any change to the model can tip a
-// note into another regime: before each string had its share of the force, the default 1 N on A3 was such
-// a note (live: +6 cents, -1.6 dB against the full model's raucous start); that is the chaos of bowing, not a
-// property of the band.
+// margin of what was measured (Resources/docs/benchmarks.md, "Quality"). Near a regime boundary any change to
+// the model can tip a note into another regime: before each string had its share of the force, the default 1
+// N on A3 was such a note (live: +6 cents, -1.6 dB against the full model's raucous start); that is the chaos
+// of bowing, not a property of the band.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -103,7 +103,7 @@ TEST(Quality, LiveStopsEveryStringAndTheBodyAtTenKilohertz)
 }
 
 // What a listener could hear change: the pitch, the level and the brightness of sustained notes on all four
-// strings and one stopped note. Measured (28 Nov 2026, x86-64-v4 and the baseline path): pitch within 0.17
+// strings and one stopped note. Measured (x86-64-v4 and the baseline path): pitch within 0.17
 // cents, level within 0.09 dB, centroid 0.984-1.003 of the full model's.
 TEST(Quality, LiveSoundsAsTheFullModelWithinACentAndAFewPercentOfBrightness)
 {

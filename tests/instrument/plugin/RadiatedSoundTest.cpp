@@ -1,7 +1,8 @@
 // What the plugin sends to the host (OutputStage.h): by default the sound the body radiates, which has no DC
 // and next to nothing below 40 Hz by physics (a time derivative of a volume velocity), not by a filter; the
 // bridge force for the lab, whose DC (the bow's static pull) the DC blocker removes on request.
-// Sustained notes as issue 18 measures them: default program, 2 s at velocity 80, analysed over 0.8-1.8 s.
+// Sustained notes, measured as the radiated output's specification says: default program, 2 s at velocity 80,
+// analysed over 0.8-1.8 s.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -59,7 +60,7 @@ NoteFigures analyse(const std::vector<float>& audio)
     return f;
 }
 
-// Issue 18's criterion: |mean| below 1 % of the rms and below 1 % of the energy under 40 Hz, for C2 G2 D3
+// The criterion: |mean| below 1 % of the rms and below 1 % of the energy under 40 Hz, for C2 G2 D3
 // A3 D4 (measured: |mean| <= 0.1 % of the rms, < 0.01 % below 40 Hz). The bridge force the plugin sent
 // before had a mean of 45-78 % of its rms.
 TEST(RadiatedSound, SustainedCelloNotesHaveNoDcAndNoSubsonicEnergy)

@@ -1,4 +1,4 @@
-// A damaged project must neither silence nor crash the plugin (issue 19, items 7-8): non-finite and
+// A damaged project must neither silence nor crash the plugin: non-finite and
 // out-of-range values restore as defaults, oversized or deeply nested states are refused before parsing,
 // the engine plays again as soon as its inputs are sane, and every parameter the host sees is refreshed.
 #include <gtest/gtest.h>

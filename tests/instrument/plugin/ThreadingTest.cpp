@@ -2,7 +2,8 @@
 // changes the friction law, instrument, body and output, switches programs, saves and restores the state,
 // presses on-screen keys and reads the editor's readouts, servicing engine builds as the processor's timer
 // would. Output stays finite and audio keeps running; CI runs this test under ThreadSanitizer as well
-// (README "Tests"), which fails it on any data race between the two sides of the lock-free engine swap.
+// (Resources/docs/tests.md), which fails it on any data race between the two sides of the lock-free engine
+// swap.
 #include <gtest/gtest.h>
 
 #include <atomic>

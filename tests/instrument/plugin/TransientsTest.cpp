@@ -3,8 +3,8 @@
 // the largest step of the note's own steady sound (0.5-0.95 s and 1.5-1.95 s). A click is a step the steady
 // sound never makes; the flybacks of Helmholtz motion make the steady steps themselves. Measured (radiated
 // sound, default output): cello-plastic C2-D4 transitions at 0.02-1.10 x the steady step, violin-thermal
-// G3-A5 at 0.04-1.06 x. The viscous law is left out: its bow changes start forward slips (seed 000: "forward
-// slipping"), bursts of up to 3.2 x the steady step on A3 that are its physics.
+// G3-A5 at 0.04-1.06 x. The viscous law is left out: its bow changes start forward slips ([Smith2000]:
+// "forward slipping"), bursts of up to 3.2 x the steady step on A3 that are its physics.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 #pragma once
-// The spec's example dataset.json (shared/spec/measurements.md, copied verbatim) and a scratch dataset folder
+// The spec's example dataset.json (Resources/docs/measurements.md, copied verbatim) and a scratch dataset folder
 // to write variants of it into.
 #include <filesystem>
 #include <fstream>

@@ -74,7 +74,7 @@ TEST(EffectCatalog, ParametersHaveNamesUnitsAndRanges)
     }
     const auto& jump = findEffect("breakaway-jump")->parameters.front();
     EXPECT_EQ(jump.choices, (std::vector<std::string>{"rod", "bow", "none"}));
-    EXPECT_EQ(jump.drawMax, 1.0); // synth-data hides seed 002's law, rod or bow, as it always did
+    EXPECT_EQ(jump.drawMax, 1.0); // synth-data hides [Woodhouse-thermal]'s law, rod or bow, as it always did
     EXPECT_EQ(findEffect("junction-growth")->parameters[1].unit, "s");
     EXPECT_EQ(findEffect("sticking-creep")->parameters[0].unit, "N s/m");
     EXPECT_EQ(findEffect("ambient-temperature")->parameters[0].unit, "K");
@@ -101,7 +101,7 @@ TEST(EffectCatalog, JunctionGrowthAgesTheVoicesStaticLimit)
     EXPECT_GT(law->staticCoefficient(1.0), aged); // and keeps growing with hold time
 }
 
-TEST(EffectCatalog, BreakawayJumpSwitchesToTheModifiedLawOfSeed002)
+TEST(EffectCatalog, BreakawayJumpSwitchesToTheModifiedThermalLaw)
 {
     SimulationModel rod = withEffect("breakaway-jump", {0, 0.0});
     EXPECT_EQ(rod.preset.friction, "modified-rod");

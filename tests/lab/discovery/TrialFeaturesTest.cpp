@@ -91,8 +91,8 @@ TEST(TrialFeatures, SteadyHelmholtzMotionHasTheIdealSawtoothLevel)
     EXPECT_GT(*f[kPitchCents], -15.0);
 }
 
-// Above Schelleng's maximum force the motion is raucous: no pitch, no tilt, but the level is read (issue 16
-// item 5: most of a Schelleng scan lies outside Helmholtz motion) and lies within the sawtooth's range.
+// Above Schelleng's maximum force the motion is raucous: no pitch, no tilt, but the level is read (most
+// of a Schelleng scan lies outside Helmholtz motion) and lies within the sawtooth's range.
 TEST(TrialFeatures, SteadyLevelIsReadOutsideHelmholtzMotionToo)
 {
     const auto f = steadyNote(0.1, 4.0, 0.5);

@@ -99,7 +99,7 @@ def make_schelleng(directory, n_beta=20, n_force=20, shift=1.0):
 
 
 def guettler_wedge(beta, mu_s=1.2, mu_d=0.35, pz0=3.73e-3):
-    """Reference eq. 6.6: acceleration per newton at the wedge's lower and upper edge."""
+    """[Notes] eq. 6.6: acceleration per newton at the wedge's lower and upper edge."""
     k = beta * (1 - beta) / pz0
     lower = k * (3 * mu_s - mu_d - 2 * math.sqrt(2 * mu_s ** 2 - mu_s * mu_d))
     upper = k * ((3 - 4 * beta) * mu_s - mu_d - 2 * math.sqrt(

@@ -1,4 +1,4 @@
-// Helper programs run from an argument vector, never through a shell (issue 19): hostile names stay names.
+// Helper programs run from an argument vector, never through a shell: hostile names stay names.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -1,13 +1,13 @@
 // A Guettler trial that ends early (ScanSpec::trialEnd, TrialEnd.h) must report the same first slip and the
 // same transient as the whole 0.5 s trial. "window" ends once the analysis's window (2 x cap periods after
 // the first full flyback) is over; "decided" also ends a trial once no Helmholtz run can start within the
-// cap. Checked cell by cell against whole trials, for a friction curve and a thermal law, over the seed's
-// force and acceleration ranges at beta 0.0899. The first slip is identical, and so is the transient: it is
-// judged, and counted in the period measured, within the first 40 periods after the first slip
-// (CellAnalysis.h), which every trial that reaches Helmholtz motion covers. (Counted in the period at the
-// trial's end, as before, an early end measured it up to 0.3 % off: the bow still accelerates.) The regime
-// (of the last 20 periods) may differ, since it is then taken earlier, and so may the failure type of a
-// transient that missed the cap when "decided" stops it sooner: the agreement is printed.
+// cap. Checked cell by cell against whole trials, for a friction curve and a thermal law, over
+// [Galluzzo2017]'s force and acceleration ranges at beta 0.0899. The first slip is identical, and so is the
+// transient: it is judged, and counted in the period measured, within the first 40 periods after the first
+// slip (CellAnalysis.h), which every trial that reaches Helmholtz motion covers. (Counted in the period at
+// the trial's end, as before, an early end measured it up to 0.3 % off: the bow still accelerates.) The
+// regime (of the last 20 periods) may differ, since it is then taken earlier, and so may the failure type of
+// a transient that missed the cap when "decided" stops it sooner: the agreement is printed.
 #include <gtest/gtest.h>
 
 #include <cstdio>

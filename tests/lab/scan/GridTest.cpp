@@ -1,5 +1,5 @@
-// The default grids of seed 001 (section 3: Schelleng 20 x 20 log-spaced, Guettler 20 x 20 linear at the
-// eight betas of Fig. 5) and the cell numbering of Resources/docs/scan-format.md.
+// The default grids of [Galluzzo2017] (section 3: Schelleng 20 x 20 log-spaced, Guettler 20 x 20 linear at
+// the eight betas of Fig. 5) and the cell numbering of Resources/docs/scan-format.md.
 #include <gtest/gtest.h>
 
 #include <cmath>

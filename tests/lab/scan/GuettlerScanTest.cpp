@@ -1,12 +1,13 @@
-// Physics check (b): Guettler scans at beta = 0.0899 (seed 001 Figs. 6-8 column e, 20 x 20, 0.5 s trials,
-// the cello D3 of the Galluzzo rig on the cello body) with the three friction models of the seed. The seed
-// finds the reconstructed curve "significantly better" than the classical one and the thermal (plastic) model
-// "rather more benign than the reconstructed ... and a great deal more so than the original friction curve".
-// Measured: the fraction of cells reaching Helmholtz motion within 20 periods of the first slip.
+// Physics check (b): Guettler scans at beta = 0.0899 ([Galluzzo2017] Figs. 6-8 column e, 20 x 20, 0.5 s
+// trials, the cello D3 of the Galluzzo rig on the cello body) with the three friction models of
+// [Galluzzo2017]. The paper finds the reconstructed curve "significantly better" than the classical one and
+// the thermal (plastic) model "rather more benign than the reconstructed ... and a great deal more so than
+// the original friction curve". Measured: the fraction of cells reaching Helmholtz motion within 20 periods
+// of the first slip.
 //
-// Found (see the [figure] line): plastic > reconstructed > classical, as in the seed, once the transient
-// counts only full flybacks (scan::kFlybackShare): the plastic law's short reversals at a slow bow had
-// counted as flybacks and broke its Helmholtz runs (then 5.0 % plastic against 5.5 % reconstructed). The
+// Found (see the [figure] line): plastic > reconstructed > classical, as in [Galluzzo2017], once the
+// transient counts only full flybacks (scan::kFlybackShare): the plastic law's short reversals at a slow bow
+// had counted as flybacks and broke its Helmholtz runs (then 5.0 % plastic against 5.5 % reconstructed). The
 // ranking holds for shares 0.15-0.35 (plastic 11-19 %, reconstructed 5.5-6 %, classical 2.75-3 %), and at
 // larger beta the plastic law is far ahead.
 #include <gtest/gtest.h>
@@ -71,21 +72,22 @@ TEST_F(GuettlerScan, FrictionCurvesRankAsInTheSeed)
         plastic > reconstructed && reconstructed > classical ? "reproduced" : "NOT reproduced");
 }
 
-// The seed's full ranking: the thermal law is "rather more benign than the reconstructed".
+// [Galluzzo2017]'s full ranking: the thermal law is "rather more benign than the reconstructed".
 TEST_F(GuettlerScan, PlasticBeatsReconstructed)
 {
     EXPECT_GT(reached_["plastic"], reached_["reconstructed"]);
 }
 
-// Seed 001 on Fig. 12a (the classical curve, beta 0.0899, 300 x 300): "roughly a quarter of the samples
+// [Galluzzo2017] on Fig. 12a (the classical curve, beta 0.0899, 300 x 300): "roughly a quarter of the samples
 // classified as successful". Rosin's replica of that scan reaches Helmholtz motion within 20 periods in 2.9 %
-// of the cells, and an independent reflection-function simulator in 3.5 % (issue 17): the models agree with
-// each other, not with the seed. Fig. 12 hatches "unsuccessful simulations" and shades the rest by transient
-// length, black for 20 periods or more, so "successful" there can mean "reaches Helmholtz motion at all".
-// Counted that way, whole 0.5 s trials end in Helmholtz motion in 18.0 % of the 90,000 cells (measured with
-// `rosin scan guettler --friction classical --beta 0.0899 --grid 300 --full-trials`), the seed's order. Here
-// on the 20 x 20 grid: most of the classical curve's Helmholtz cells take longer than the cap (measured: 19.0
-// % end in Helmholtz motion, 2.8 % reach it within 20 periods), and the share is of the seed's order.
+// of the cells, and an independent reflection-function simulator in 3.5 %: the models agree with
+// each other, not with [Galluzzo2017]. Fig. 12 hatches "unsuccessful simulations" and shades the rest by
+// transient length, black for 20 periods or more, so "successful" there can mean "reaches Helmholtz motion at
+// all". Counted that way, whole 0.5 s trials end in Helmholtz motion in 18.0 % of the 90,000 cells (measured
+// with `rosin scan guettler --friction classical --beta 0.0899 --grid 300 --full-trials`), [Galluzzo2017]'s
+// order. Here on the 20 x 20 grid: most of the classical curve's Helmholtz cells take longer than the cap
+// (measured: 19.0 % end in Helmholtz motion, 2.8 % reach it within 20 periods), and the share is of
+// [Galluzzo2017]'s order.
 TEST(GuettlerScanWholeTrials, MostClassicalHelmholtzCellsTakeLongerThanTheCap)
 {
     ScanSpec spec = defaultSpec(ScanKind::Guettler);
@@ -105,19 +107,20 @@ TEST(GuettlerScanWholeTrials, MostClassicalHelmholtzCellsTakeLongerThanTheCap)
     const double withinCap = beta["reachedCells"].get<double>() / cells;
     std::printf(
         "[figure] classical, beta 0.0899, whole 0.5 s trials: %.1f %% of cells end in Helmholtz motion, "
-        "%.1f %% reach it within 20 periods (seed 001: roughly a quarter successful)\n",
+        "%.1f %% reach it within 20 periods ([Galluzzo2017]: roughly a quarter successful)\n",
         100.0 * endsInHelmholtz, 100.0 * withinCap);
     EXPECT_GT(endsInHelmholtz, 4.0 * withinCap);
-    EXPECT_GT(endsInHelmholtz, 0.125); // the seed's order: within a factor 2 of a quarter
+    EXPECT_GT(endsInHelmholtz, 0.125); // [Galluzzo2017]'s order: within a factor 2 of a quarter
     EXPECT_LT(endsInHelmholtz, 0.5);
 }
 
-// Seed 001 classifies simulated trials with the algorithm it uses on measurements, from the bridge force.
-// `--classify bridge-force` does so (criteria fixed before this comparison: reference 7.2 onsets with Rosin's
-// 0.15 P refractory time, the same reference-7.3 transient rule, window from the first onset). A second
+// [Galluzzo2017] classifies simulated trials with the algorithm it uses on measurements, from the bridge
+// force.
+// `--classify bridge-force` does so (criteria fixed before this comparison: [Notes §7.2] onsets with Rosin's
+// 0.15 P refractory time, the same [Notes §7.3] transient rule, window from the first onset). A second
 // method: for the plastic law it must agree with the state's reached-or-not in most cells (measured: 359 of
 // 400). Shares measured with it at beta 0.0899: plastic 17.0 %, classical 1.5 %, reconstructed 0.0 % (the
-// reconstructed curve's partial slips, ~500 a second, read as extra slips in the force), so the seed's
+// reconstructed curve's partial slips, ~500 a second, read as extra slips in the force), so [Galluzzo2017]'s
 // ranking does not hold under this classification: plastic > classical > reconstructed.
 TEST_F(GuettlerScan, BridgeForceClassificationAgreesWithTheStateForThePlasticLaw)
 {

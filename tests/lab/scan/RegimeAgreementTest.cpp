@@ -1,7 +1,7 @@
 // The regime classifier from the simulation's state (flybacks) against the classifier from the bridge force
 // alone, as a measurement would give, over a 10 x 10 Schelleng scan (classical curve, cello D3 on the body):
-// issue 4 asks for agreement on at least 90 % of the cells. Both judge the same window: the second half of
-// the time after the bow reached its speed.
+// the lab's specification asks for agreement on at least 90 % of the cells. Both judge the same window: the
+// second half of the time after the bow reached its speed.
 #include <gtest/gtest.h>
 
 #include <cstdio>

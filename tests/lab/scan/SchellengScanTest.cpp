@@ -1,24 +1,25 @@
-// Physics check (a): a Schelleng scan of the classical friction curve (seed 001 Fig. 3b: the cello D3 of the
-// Galluzzo rig on the cello body, default 20 x 20 grid, 0.05 m/s, 1 s trials) against Schelleng's theory
-// (reference 6.1-6.2): the Helmholtz region's upper edge F_max = 2 Z0 v_b / (beta (mu_s - mu_d)) has slope -1
+// Physics check (a): a Schelleng scan of the classical friction curve ([Galluzzo2017] Fig. 3b: the cello D3
+// of the Galluzzo rig on the cello body, default 20 x 20 grid, 0.05 m/s, 1 s trials) against Schelleng's
+// theory
+// ([Notes §6.1-6.2]): the Helmholtz region's upper edge F_max = 2 Z0 v_b / (beta (mu_s - mu_d)) has slope -1
 // on log-log axes, the lower edge F_min ~ 1/beta^2 slope -2.
 //
 // Found (see the [figure] lines): the upper edge follows -1 and lies within a factor 2 of the theory; the
 // lower edge does not follow -2 (about -0.8). It is not Raman's body-resistance limit: F_min from the body
-// (reference eq. 6.5, d ~ 2e-4 N) is below the grid for beta > 0.05, the same lower edge appears with a rigid
+// ([Notes] eq. 6.5, d ~ 2e-4 N) is below the grid for beta > 0.05, the same lower edge appears with a rigid
 // bridge, and longer trials (2 s) or a start inside Guettler's wedge do not change it. What sets it instead
 // is measured in StickingRippleTest.cpp: in steady Helmholtz motion the sticking friction force carries a
 // ripple 8-21x the excursion eq. 6.5 assumes, scaling like v_b / beta (the corner's jump, as F_max does), so
 // the lower edge it sets runs nearly parallel to the upper edge. The -2 expectation is retired (it is
 // Schelleng's theory, not a seed result): the lower edge is checked against F_min with the model's own
 // losses. Also tried (throwaway drivers, classical, default grid): a start "tailored to elicit steady
-// Helmholtz motion" (seed 001 section 2.2): attack at F0 inside the region (0.39 F_max, or the geometric mean
-// of the theory's F_min and F_max; acceleration 0.5 m/s^2 or the middle of Guettler's wedge for F0), hold,
-// glide the force to N over 0.2 s, judge the last 0.45 s of 1.2 s. Helmholtz motion established at F0 still
-// falls into double slipping or raucous motion at 0.1-0.3 N for most betas above 0.04 (fitted lower slopes
-// -0.7 to -3.1 depending on F0 and the fit rule); 96 kHz, a rigid bridge, no torsion or no bending stiffness
-// do not give a clean -2 either, nor does the less certain loss scale eta_B x 1e-2 (-1.15). With the other
-// laws the same scan gives lower slopes of -1.39 (reconstructed) and -1.64 (plastic).
+// Helmholtz motion" ([Galluzzo2017] section 2.2): attack at F0 inside the region (0.39 F_max, or the
+// geometric mean of the theory's F_min and F_max; acceleration 0.5 m/s^2 or the middle of Guettler's wedge
+// for F0), hold, glide the force to N over 0.2 s, judge the last 0.45 s of 1.2 s. Helmholtz motion
+// established at F0 still falls into double slipping or raucous motion at 0.1-0.3 N for most betas above 0.04
+// (fitted lower slopes -0.7 to -3.1 depending on F0 and the fit rule); 96 kHz, a rigid bridge, no torsion or
+// no bending stiffness do not give a clean -2 either, nor does the less certain loss scale eta_B x 1e-2
+// (-1.15). With the other laws the same scan gives lower slopes of -1.39 (reconstructed) and -1.64 (plastic).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -91,7 +92,7 @@ TEST_F(SchellengScan, UpperBoundaryFollowsSchellengsMaximumForce)
         summary_["theory"]["fminCoefficient"].get<double>() / (betaMid * betaMid));
 }
 
-// Schelleng's -2 is his theory, not a seed result (reference 6.2): the lower edge is tested against what the
+// Schelleng's -2 is his theory, not a seed result ([Notes §6.2]): the lower edge is tested against what the
 // theory can promise for this model, F_min of eq. 6.5 with the model's own losses (body and string), below
 // which Helmholtz motion cannot survive: a necessary bound, which every Helmholtz cell must respect.
 // Measured: the lowest Helmholtz force of each beta column is 1.95-8.5x that bound, ~2x at beta <= 0.057,

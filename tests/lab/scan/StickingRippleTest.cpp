@@ -1,6 +1,6 @@
 // Why the Schelleng scan's lower edge does not follow -2 (SchellengScanTest.cpp): Schelleng's minimum bow
 // force assumes that, in Helmholtz motion, the friction force during sticking only drifts by the small
-// excursion that the bridge's losses impose (reference eq. 6.4-6.5, Raman's dashpot in the limit). In this
+// excursion that the bridge's losses impose ([Notes] eq. 6.4-6.5, Raman's dashpot in the limit). In this
 // model the sticking force also carries a ripple: the Helmholtz corner is re-sharpened at every slip and its
 // high harmonics, dispersed by bending stiffness, come back to the bow during sticking. The ripple scales
 // with the corner's velocity jump v_b / beta (Cremer), as F_max does, so a lower edge set by it runs parallel
@@ -29,7 +29,7 @@ using namespace rosin;
 namespace ROSIN_FILE_LOCAL
 {
 constexpr double sampleRate = 48000.0;
-constexpr double bowSpeed = 0.05; // m/s, the Schelleng grid's (seed 001 section 3.1)
+constexpr double bowSpeed = 0.05; // m/s, the Schelleng grid's ([Galluzzo2017] section 3.1)
 
 struct SteadyMotion
 {

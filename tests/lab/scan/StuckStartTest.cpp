@@ -1,11 +1,11 @@
 // Guettler cells whose sticking start is scaled from a unit start (physics::RampStart) against the same
-// cells computed from rest, sample by sample: the plastic law and the classical curve over the seed's force
-// and acceleration ranges at beta 0.0899 (10 x 10). The first slip must come at the same sample, with mu_s
-// within 1e-5 and the jump within 1e-3 (measured over 20 x 20: plastic 8e-7 and 3e-5, classical 1.3e-6 for
-// mu_s). The transient that follows is chaotic: a rounding-level difference in the state at the first slip
-// (the modes are float) can move it, as any other rounding would, so reached-or-not must agree in at least
-// 95 % of the cells (measured at 20 x 20: plastic 398 of 400, classical 400 of 400) and the agreement is
-// printed.
+// cells computed from rest, sample by sample: the plastic law and the classical curve over [Galluzzo2017]'s
+// force and acceleration ranges at beta 0.0899 (10 x 10). The first slip must come at the same sample, with
+// mu_s within 1e-5 and the jump within 1e-3 (measured over 20 x 20: plastic 8e-7 and 3e-5, classical 1.3e-6
+// for mu_s). The transient that follows is chaotic: a rounding-level difference in the state at the first
+// slip (the modes are float) can move it, as any other rounding would, so reached-or-not must agree in at
+// least 95 % of the cells (measured at 20 x 20: plastic 398 of 400, classical 400 of 400) and the agreement
+// is printed.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// The theory lines of scan.json against the physics reference's own numbers (section 6), and the boundary
+// The theory lines of scan.json against the numbers of [Notes §6], and the boundary
 // fit on a synthetic Schelleng diagram with known edges.
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 
 using namespace rosin::scan;
 
-// Reference 6.3 table, cello D string (P Z0 = 3.73e-3 kg): classical mu 1.2 / 0.35 and 0.8 / 0.3.
+// [Notes §6.3] table, cello D string (P Z0 = 3.73e-3 kg): classical mu 1.2 / 0.35 and 0.8 / 0.3.
 TEST(Theory, GuettlerWedgeMatchesTheReferenceTable)
 {
     const double PZ0 = 3.73e-3;
@@ -27,7 +27,7 @@ TEST(Theory, GuettlerWedgeMatchesTheReferenceTable)
     }
 }
 
-// Reference 6.2: a dashpot bridge (R = 5 kg/s) gives Raman's F_min = 0.374 N at v_b 0.1, beta 0.1, dmu 0.8;
+// [Notes §6.2]: a dashpot bridge (R = 5 kg/s) gives Raman's F_min = 0.374 N at v_b 0.1, beta 0.1, dmu 0.8;
 // one body mode at f0 (Q 40, 0.15 kg) plus R = 100 kg/s gives 0.46 N.
 TEST(Theory, MinimumForceFromTheAdmittance)
 {

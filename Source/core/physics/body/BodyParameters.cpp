@@ -8,9 +8,9 @@
 
 #include "core/physics/body/BodyRadiation.h"
 
-// Body = a few parametric low "signature" modes (reference §5.2) + a statistical set above a crossover
-// (reference §5.3). Every number below is an engineering estimate [A]/[M] unless tagged otherwise: no
-// verified cello or violin modal table was available (reference §10 Q5). Replace with fitted data when
+// Body = a few parametric low "signature" modes ([Notes §5.2]) + a statistical set above a crossover
+// ([Notes §5.3]). Every number below is an engineering estimate [A]/[M] unless tagged otherwise: no
+// verified cello or violin modal table was available ([Notes §10] Q5). Replace with fitted data when
 // possible.
 
 namespace rosin::physics
@@ -19,7 +19,7 @@ namespace
 {
 constexpr double twoPi = 2.0 * std::numbers::pi;
 
-/// Statistical high-frequency body (reference §5.3 items 1-6).
+/// Statistical high-frequency body ([Notes §5.3] items 1-6).
 struct StatisticalRecipe
 {
     double crossoverHz;       ///< first statistical mode lies above this
@@ -98,7 +98,7 @@ void appendStatisticalModes(std::vector<BodyMode>& modes, const StatisticalRecip
         const double g = rng.gaussian();
         if (f >= maxFrequencyHz)
             break;
-        // Reference §5.3 item 4: <1/m> = 2 Re Y_skel / (pi n_w), n_w = n_f / (2 pi)  =>  <1/m> = 4 Re Y_skel
+        // [Notes §5.3] item 4: <1/m> = 2 Re Y_skel / (pi n_w), n_w = n_f / (2 pi)  =>  <1/m> = 4 Re Y_skel
         // / n_f. Each mode's Re Y integrates to pi / (2 m) over omega, so this reproduces the skeleton on
         // average.
         const double meanInverseMass = 4.0 * skeletonRealAdmittance(r, f) / r.modalDensityPerHz;
@@ -146,7 +146,7 @@ BodyParameters assemble(const char* name, const std::vector<BodyMode>& lowModes,
     return body;
 }
 
-// Cello low modes [M ranges of reference §5.2; chosen values A]. Wolf check (reference §5.2 / eq. 6.3, cello
+// Cello low modes [M ranges of [Notes §5.2]; chosen values A]. Wolf check ([Notes §5.2] / eq. 6.3, cello
 // D string Z0 = 0.547 kg/s, v_b = 0.1 m/s, beta = 0.1, dmu = 0.8: F_min = Z0^2 v_b Re Y / (2 beta^2 dmu)
 // = 1.87 N per s/kg of Re Y) [D]:
 //  * B1+ at 194 Hz (between F#3 and G3), Q 40, m 0.2 kg: peak Re Y = Q / (m w) = 0.164 s/kg (0.166 with the
@@ -154,7 +154,7 @@ BodyParameters assemble(const char* name, const std::vector<BodyMode>& lowModes,
 //  * B1- at 176 Hz (F3) -> Re Y 0.066 s/kg, F_min ~ 0.12 N: a slight secondary tendency, as on many cellos.
 //  * every other low mode stays below ~0.07 N; between modes (e.g. 120 Hz) Re Y ~ 1e-3 s/kg -> F_min ~ 1 mN.
 // Scaled peak admittance Z0 Re Y ~ 0.09 here vs ~0.05 for the violin set below (Z0 ~ 0.3 kg/s on its G
-// string): ~5 dB higher for the cello, as reported in reference §5.2 [V2: EUPH 9.4].
+// string): ~5 dB higher for the cello, as reported in [Notes §5.2] [V2: EUPH 9.4].
 // Radiation (fourth and fifth numbers: sigma and the sign of the net volume velocity; BodyRadiation.h): the
 // cello's signature modes are the violin's scaled ~2.1x in size, so each has the violin homologue's ka and
 // its radiation efficiency [A]: B1- 0.12 and B1+ 0.11 (Bissinger 2008), C1 and CBR, which move little net
@@ -167,10 +167,10 @@ const std::vector<BodyMode> celloLowModes = {
     {150.0, 30.0, 0.9, 0.01, -1.0},
     {176.0, 35.0, 0.5, 0.12, 1.0},  // B1- (T1): first corpus bending, lower
     {194.0, 40.0, 0.2, 0.11, 1.0},  // B1+ (C3): strongest at the bridge -> the wolf near F#3-G3
-    {290.0, 30.0, 0.8, 0.145, 1.0}, // a further corpus mode (reference §5.2: 250-700 Hz, m 0.3-2 kg)
+    {290.0, 30.0, 0.8, 0.145, 1.0}, // a further corpus mode ([Notes §5.2]: 250-700 Hz, m 0.3-2 kg)
 };
 
-// Cello statistical set [D with A inputs; reference §5.3 and body.py]:
+// Cello statistical set [D with A inputs; [Notes §5.3] and body.py]:
 //  * n_f: spruce top 0.033 /Hz + maple back 0.035 /Hz ~ 0.07 /Hz (mean spacing ~14 Hz);
 //  * Re Y_skel 0.015 s/kg: between the plates' infinite-plate levels 0.012 and 0.017 s/kg, giving
 //    <1/m> = 0.86 /kg (<m> ~ 1.2 kg); crossover 550 Hz, where the modal overlap eta f n_f ~ 0.8;
@@ -199,7 +199,7 @@ const std::vector<BodyMode> violinLowModes = {
 // Violin statistical set [D with A inputs]: equivalent plates (top 2.8 mm spruce, back 3 mm maple, ~0.055 m^2
 // each) give n_f ~ 0.012 + 0.012 = 0.023 /Hz (spacing ~43 Hz) and a top-plate Y_inf ~ 0.045 s/kg; skeleton
 // 0.035 s/kg (<m> ~ 0.16 kg); crossover 750 Hz; bridge hill at 2.6 kHz with Q_h = 1.5 (peak Re Y_skel
-// 0.08 s/kg, effective bridge mass ~1 g), inside the 2-3 kHz range of reference §5.3 item 5.
+// 0.08 s/kg, effective bridge mass ~1 g), inside the 2-3 kHz range of [Notes §5.3] item 5.
 constexpr StatisticalRecipe violinRecipe{750.0, 0.023, 0.035, 2600.0, 1.5, 0.025, 0.3, 1500.0};
 
 // Violin radiation [A]: top 2.8 mm spruce 1.2 kg/m^2, back 3 mm maple 1.9 kg/m^2, mean rho_s 1.55 kg/m^2;
@@ -210,7 +210,7 @@ constexpr BodyRadiation violinRadiation{1.55, 1.0, 4200.0, 4000.0};
 
 std::complex<double> BodyParameters::admittance(double frequencyHz) const
 {
-    // Reference eq. 5.2: Y(w) = sum_k i w / ( m_k (w_k^2 - w^2 + i w w_k / Q_k) ).
+    // [Notes] eq. 5.2: Y(w) = sum_k i w / ( m_k (w_k^2 - w^2 + i w w_k / Q_k) ).
     const double w = twoPi * frequencyHz;
     std::complex<double> y = 0.0;
     for (const auto& m : modes)

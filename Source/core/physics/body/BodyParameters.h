@@ -1,6 +1,6 @@
 #pragma once
 // The instrument body as seen from the string: a driving-point admittance at the bridge notch in the
-// bowing direction, written as a sum of modes (reference eq. 5.2):
+// bowing direction, written as a sum of modes ([Notes] eq. 5.2):
 //     Y(omega) = sum_k i omega / ( m_k (omega_k^2 - omega^2 + i omega omega_k / Q_k) ).
 #include <complex>
 #include <cstdint>
@@ -42,8 +42,8 @@ struct BodyParameters
 
 /// A rigid bridge (no body modes).
 BodyParameters rigidBody();
-/// Cello body: parametric low "signature" modes (reference §5.2) plus a statistical high-frequency set
-/// (reference §5.3), generated deterministically from `seed` up to maxFrequencyHz. Above 1.2 kHz, where the
+/// Cello body: parametric low "signature" modes ([Notes §5.2]) plus a statistical high-frequency set
+/// ([Notes §5.3]), generated deterministically from `seed` up to maxFrequencyHz. Above 1.2 kHz, where the
 /// modes overlap, one band mode per 1/12 octave carries their mean admittance (about 90 modes in all);
 /// denseModes = true keeps every statistical mode instead (about 650 below 10 kHz).
 BodyParameters celloBody(std::uint32_t seed = 1, double maxFrequencyHz = 10000.0, bool denseModes = false);

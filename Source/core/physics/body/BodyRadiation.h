@@ -1,5 +1,5 @@
 #pragma once
-// From the body's modes to the sound pressure a listener hears (Resources/docs and reference sound.md).
+// From the body's modes to the sound pressure a listener hears (Resources/docs/physics.md; [Notes, sound]).
 //
 // Each body mode radiates in proportion to its own motion: the admittance and the radiation share the
 // body's poles and differ only in their residues (Maestre, Scavone & Smith, "Joint modeling of impedance and

@@ -1,5 +1,5 @@
 #pragma once
-// The body as a discrete modal system driven by the bridge force (reference eq. 5.2 and §5.1): one or several
+// The body as a discrete modal system driven by the bridge force ([Notes] eq. 5.2 and §5.1): one or several
 // strings push the bridge with force F; the body answers with a bridge displacement u, velocity u' and
 // acceleration u''. Each output is "history + direct * F" for the current sample, which is what the strings'
 // junction solves need. The same modes also give what a listener hears: the radiated sound pressure, a

@@ -1,7 +1,7 @@
 #pragma once
 // Breakaway in its phenomenological form: a contact at rest holds more than the law's static limit until it
-// first slips. Seed 002 measured the force jump at the first slip of over 1000 Guettler transients and
-// found it larger than steady sliding explains while the rosin is cold (its modified law, eqs. 6, 12-13,
+// first slips. [Woodhouse-thermal] measured the force jump at the first slip of over 1000 Guettler transients
+// and found it larger than steady sliding explains while the rosin is cold (its modified law, eqs. 6, 12-13,
 // puts that in a jump curve h(v)). This wrapper states the same signature without a curve: until the first
 // sliding sample after reset() the wrapped law sees the bow force x (1 + margin), so its static limit is
 // (1 + margin) times its own (exactly so for Coulomb scaling); the first slip releases the margin for good,

@@ -1,5 +1,5 @@
 #pragma once
-// A friction-curve law: the classical (seed 001 eq. 1) or reconstructed (seed 001 eq. 2) curve,
+// A friction-curve law: the classical ([Galluzzo2017] eq. 1) or reconstructed ([Galluzzo2017] eq. 2) curve,
 // solved exactly with the hysteresis rule.
 #include <algorithm>
 #include <optional>

@@ -15,7 +15,7 @@ struct CurvePoint
     double curvature = 0.0; ///< d2mu/dx2, s^2/m^2
 };
 
-/// Classical steady-sliding fit of Smith & Woodhouse (seed 001 eq. 1; seed 000 eq. 2):
+/// Classical steady-sliding fit of Smith & Woodhouse ([Galluzzo2017] eq. 1; [Smith2000] eq. 2):
 /// mu(x) = 0.4 exp(-x/0.01) + 0.45 exp(-x/0.1) + 0.35, x = |v - v_b| in m/s. mu_s = 1.2, mu(inf) = 0.35.
 struct ClassicalCurve
 {
@@ -36,7 +36,7 @@ struct ClassicalCurve
     }
 };
 
-/// Galluzzo's curve reconstructed from first-slip jumps (seed 001 eq. 2):
+/// Galluzzo's curve reconstructed from first-slip jumps ([Galluzzo2017] eq. 2):
 /// mu(x) = 0.4 exp(-x/0.7) + 0.35. mu_s = 0.75.
 struct ReconstructedCurve
 {
@@ -51,7 +51,7 @@ struct ReconstructedCurve
     }
 };
 
-/// Power-law curve c (x + x0)^(-0.4) (seed 002 eqs. 11-13): the revised steady-sliding fit
+/// Power-law curve c (x + x0)^(-0.4) ([Woodhouse-thermal] eqs. 11-13): the revised steady-sliding fit
 /// (c = 0.2, x0 = 0.011), the jump curve h(v) of a real bow (0.5, 0.27, eq. 12) or of a rosin-coated
 /// rod (0.37, 0.35, eq. 13). Multiplied by `scale` (the modified law's K Y(T)).
 struct PowerLawCurve

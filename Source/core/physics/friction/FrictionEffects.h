@@ -1,6 +1,6 @@
 #pragma once
-// Optional friction effects beyond the seeds' laws (reference §8; the discrepancy workflow's catalog), as
-// wrappers any law can take. All off by default, so a law built without them is exactly the seed's.
+// Optional friction effects beyond the source texts' laws ([Notes §8]; the discrepancy workflow's catalog),
+// as wrappers any law can take. All off by default, so a law built without them is exactly the source text's.
 #include <memory>
 
 #include "core/physics/friction/BreakawayMarginLaw.h"

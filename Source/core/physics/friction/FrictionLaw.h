@@ -1,6 +1,6 @@
 #pragma once
-// The one interface every friction law of the seeds implements. A law is asked, once per sample, which
-// friction force and sliding speed are consistent with the string's "load line" (reference §1.3.1):
+// The one interface every friction law of the source texts implements. A law is asked, once per sample, which
+// friction force and sliding speed are consistent with the string's "load line" ([Notes §1.3.1]):
 //
 //     f = 2Z (dv - dvHistory),   dv = v - v_b,
 //

@@ -1,8 +1,8 @@
 #pragma once
-// Junction growth (contact ageing, reference §8.2): the static friction of a polymer contact grows with the
+// Junction growth (contact ageing, [Notes §8.2]): the static friction of a polymer contact grows with the
 // time it has been held, mu_s(t_h) = mu_s0 + beta_a ln(1 + t_h / tau_c), because the real contact area of
-// the asperities creeps and grows while nothing slides. Any friction law of the seeds can age: this wrapper
-// passes the wrapped law a normal force scaled by
+// the asperities creeps and grows while nothing slides. Any friction law of the source texts can age: this
+// wrapper passes the wrapped law a normal force scaled by
 //     g(t_h) = 1 + growth ln(1 + t_h / tau_c),    growth = beta_a / mu_s0,
 // while the contact sticks (t_h = time since the last sliding sample), and the plain force while it slides
 // (g(0) = 1: a slip breaks the junctions and the memory). Or, saturating (AgeingForm::Saturating),

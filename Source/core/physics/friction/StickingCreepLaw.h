@@ -1,7 +1,7 @@
 #pragma once
-// Creep during nominal sticking (seed 001 section 5.3): a measured pre-slip force rises more slowly than
-// rigid sticking predicts, as if the rosin layer yielded viscously before it lets go. This wrapper puts a
-// dashpot of resistance eta (N s/m) in series with the wrapped law's sticking contact: whenever the wrapped
+// Creep during nominal sticking ([Galluzzo2017] section 5.3): a measured pre-slip force rises more slowly
+// than rigid sticking predicts, as if the rosin layer yielded viscously before it lets go. This wrapper puts
+// a dashpot of resistance eta (N s/m) in series with the wrapped law's sticking contact: whenever the wrapped
 // law sticks, the string slides instead at
 //     dv = 2Z dvh / (2Z + eta),    f = -eta dv,
 // the intersection of the load line f = 2Z (dv - dvh) with the dashpot, so the force the contact carries

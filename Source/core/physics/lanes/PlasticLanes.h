@@ -5,7 +5,7 @@
 // lanes (one kernel per vector unit, KernelDispatch.h). The calibration table, the heat model's
 // sum-of-exponentials and the contact geometry are shared (read from one prepared PlasticThermalLaw), so
 // eight lanes keep one copy in cache instead of eight. A lane agrees with its own PlasticThermalLaw to
-// rounding (the history sum is added in another order; tests/physics/VoiceLanesTest.cpp).
+// rounding (the history sum is added in another order; tests/core/physics/VoiceLanesTest.cpp).
 #include <memory>
 #include <vector>
 

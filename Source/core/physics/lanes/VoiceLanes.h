@@ -6,8 +6,8 @@
 // law, one object per lane, or the plastic law lane-wise). A lane's samples do not depend on the other lanes.
 //
 // The modal sums are formed in another order than the voice's (mode by mode per lane rather than across
-// modes), so a lane agrees with BowedStringVoice to float rounding, not bit for bit; tests/physics checks the
-// two against each other.
+// modes), so a lane agrees with BowedStringVoice to float rounding, not bit for bit; tests/core/physics/
+// checks the two against each other.
 #include <array>
 #include <memory>
 #include <vector>

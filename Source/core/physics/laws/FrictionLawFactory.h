@@ -10,15 +10,15 @@
 namespace rosin::physics
 {
 
-/// The six laws of the seeds.
+/// The six laws of the three source texts ([Smith2000], [Galluzzo2017], [Woodhouse-thermal]).
 enum class FrictionModel
 {
-    Classical,     ///< seed 001 eq. 1, friction curve with hysteresis rule
-    Reconstructed, ///< seed 001 eq. 2, friction curve with hysteresis rule
-    Plastic,       ///< seed 000 eq. 4 as used in seed 001: mu = tau_y(T) A / Fb
-    Viscous,       ///< seed 000 eq. 3: f = -eta(T) A dv / delta
-    ModifiedBow,   ///< seed 002 eq. 6 with the bow jump curve (eq. 12)
-    ModifiedRod    ///< seed 002 eq. 6 with the rod jump curve (eq. 13)
+    Classical,     ///< [Galluzzo2017] eq. 1, friction curve with hysteresis rule
+    Reconstructed, ///< [Galluzzo2017] eq. 2, friction curve with hysteresis rule
+    Plastic,       ///< [Smith2000] eq. 4 as used in [Galluzzo2017]: mu = tau_y(T) A / Fb
+    Viscous,       ///< [Smith2000] eq. 3: f = -eta(T) A dv / delta
+    ModifiedBow,   ///< [Woodhouse-thermal] eq. 6 with the bow jump curve (eq. 12)
+    ModifiedRod    ///< [Woodhouse-thermal] eq. 6 with the rod jump curve (eq. 13)
 };
 /// How many there are (the enum's values are 0 .. kFrictionModelCount - 1).
 inline constexpr int kFrictionModelCount = static_cast<int>(FrictionModel::ModifiedRod) + 1;

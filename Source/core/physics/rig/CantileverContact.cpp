@@ -1,4 +1,4 @@
-// Seed 000's contact for the thermal laws (CantileverContact.h).
+// [Smith2000]'s contact for the thermal laws (CantileverContact.h).
 #include "core/physics/rig/CantileverContact.h"
 
 #include <cmath>
@@ -28,10 +28,10 @@ ContactParameters cantileverContact()
 {
     ContactParameters p;
     p.materials = cantileverMaterials();
-    // Calibration (seed 000's own): contactRadiusForSteadyTemperature(55 K, 0.042 m/s, 6.3 N, 10 um,
+    // Calibration ([Smith2000]'s own): contactRadiusForSteadyTemperature(55 K, 0.042 m/s, 6.3 N, 10 um,
     // cantileverMaterials()) = 0.410 mm.
     p.rig = ContactGeometry{0.410e-3, CantileverLoad::normalForce, 10e-6, ContactScaling::Coulomb};
-    p.calibration = p.rig; // seed 000: the steady-sliding curve was measured on these surfaces
+    p.calibration = p.rig; // [Smith2000]: the steady-sliding curve was measured on these surfaces
     return p;
 }
 

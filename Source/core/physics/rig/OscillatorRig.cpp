@@ -1,4 +1,4 @@
-// Seed 000's single-mode stick-slip rig (OscillatorRig.h).
+// [Smith2000]'s single-mode stick-slip rig (OscillatorRig.h).
 #include "core/physics/rig/OscillatorRig.h"
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 #pragma once
-// Seed 000's rig as one more linear system behind the same friction laws as the string: a single damped mode
-//     m x'' + R x' + S x = f(t)                                      (seed 000 eq. 1)
+// [Smith2000]'s rig as one more linear system behind the same friction laws as the string: a single damped
+// mode
+//     m x'' + R x' + S x = f(t)                                      ([Smith2000] eq. 1)
 // driven at its contact point by the friction force f of a rosin-coated rod moving at v_rod under a normal
 // load N. The mode is a ModalBank of one mode (impulse invariance with the exact direct term, as for the
 // string modes), so the contact sees the load line v = v_h + y0 f and any FrictionLaw solves it with
@@ -46,7 +47,7 @@ struct RigSample
     double supportForce = 0.0;       ///< S x + R v: force of the oscillator on its clamp, N
     double contactTemperature = 0.0; ///< K above ambient (0 for friction-curve laws)
     bool sticking = true;
-    /// mu = f / N (0 without load): the quantity of seed 000 Figs. 2c and 6.
+    /// mu = f / N (0 without load): the quantity of [Smith2000] Figs. 2c and 6.
     double frictionCoefficient() const noexcept
     {
         return normalForce > 0.0 ? frictionForce / normalForce : 0.0;

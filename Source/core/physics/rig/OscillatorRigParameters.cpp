@@ -1,4 +1,4 @@
-// Seed 000's single-mode rig: derived constants and validation.
+// [Smith2000]'s single-mode rig: derived constants and validation.
 #include "core/physics/rig/OscillatorRigParameters.h"
 
 #include <cmath>

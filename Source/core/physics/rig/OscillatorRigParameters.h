@@ -1,6 +1,6 @@
 #pragma once
-// Seed 000's stick-slip rig: one damped mode  m x'' + R x' + S x = f(t)  (seed 000 eq. 1), the first bending
-// mode of a cantilever at the contact point, "bowed" by a rosin-coated rod.
+// [Smith2000]'s stick-slip rig: one damped mode  m x'' + R x' + S x = f(t)  ([Smith2000] eq. 1), the first
+// bending mode of a cantilever at the contact point, "bowed" by a rosin-coated rod.
 #include <string>
 
 namespace rosin::physics
@@ -8,11 +8,12 @@ namespace rosin::physics
 
 struct OscillatorRigParameters
 {
-    double frequency = 108.0;    ///< f0 = sqrt(S/m) / 2 pi, Hz (seed 000: first bending mode)
-    double qualityFactor = 20.0; ///< Q = m omega0 / R (seed 000: Q 20 for the first two bending modes)
-    /// m, kg. Not in the seed: chosen so that the traditional curve (seed 000 eq. 2) gives stick-slip at
-    /// 34 Hz with N = 6.3 N and v_rod = 0.042 m/s, as the seed reports. Found by bisection
-    /// (calibrateModalMass, RigCalibration.h; reproduced by tests/physics/rig/TraditionalCurveRigTest.cpp).
+    double frequency = 108.0;    ///< f0 = sqrt(S/m) / 2 pi, Hz ([Smith2000]: first bending mode)
+    double qualityFactor = 20.0; ///< Q = m omega0 / R ([Smith2000]: Q 20 for the first two bending modes)
+    /// m, kg. Not in [Smith2000]: chosen so that the traditional curve ([Smith2000] eq. 2) gives stick-slip
+    /// at 34 Hz with N = 6.3 N and v_rod = 0.042 m/s, as [Smith2000] reports. Found by bisection
+    /// (calibrateModalMass, RigCalibration.h; reproduced by
+    /// tests/core/physics/rig/TraditionalCurveRigTest.cpp).
     double modalMass = 0.0216;
 
     double angularFrequency() const; ///< omega0, rad/s
@@ -22,7 +23,7 @@ struct OscillatorRigParameters
     void validate() const;
 };
 
-/// Seed 000's normal load and rod speed (Fig. 2, the case simulated in Figs. 3-5).
+/// [Smith2000]'s normal load and rod speed (Fig. 2, the case simulated in Figs. 3-5).
 struct CantileverLoad
 {
     static constexpr double normalForce = 6.3; ///< N

@@ -1,10 +1,11 @@
 #pragma once
-// Offline runs of the oscillator rig and the two calibrations seed 000 leaves to the reader (allocates; never
-// on the audio thread):
-//  * the modal mass m, not given in the seed, chosen so that the traditional curve (seed 000 eq. 2, Rosin's
+// Offline runs of the oscillator rig and the two calibrations [Smith2000] leaves to the reader (allocates;
+// never on the audio thread):
+//  * the modal mass m, not given in [Smith2000], chosen so that the traditional curve ([Smith2000] eq. 2,
+//  Rosin's
 //    "classical" law) gives stick-slip at the reported 34 Hz;
 //  * the cantilever contact (CantileverContact.h), whose radius makes steady sliding at the rod speed run at
-//    the seed's ~55 K above ambient.
+//    [Smith2000]'s ~55 K above ambient.
 #include <functional>
 #include <memory>
 #include <vector>
@@ -32,9 +33,9 @@ std::vector<double> slipOnsetTimes(const RigRun& run, double fromSeconds);
 double stickSlipFrequency(const RigRun& run, double fromSeconds);
 
 /// Modal mass (kg) for which the classical curve gives stick-slip at `targetHz` on `rig` (its frequency and
-/// Q) under the seed's load and rod speed: bisection on log m over [lowKg, highKg], where the frequency rises
-/// with m (a stiffer spring reaches the breakaway force sooner). Throws std::runtime_error if the target is
-/// not bracketed.
+/// Q) under [Smith2000]'s load and rod speed: bisection on log m over [lowKg, highKg], where the frequency
+/// rises with m (a stiffer spring reaches the breakaway force sooner). Throws std::runtime_error if the
+/// target is not bracketed.
 double calibrateModalMass(const OscillatorRigParameters& rig, double targetHz, double sampleRate,
                           double lowKg = 0.005, double highKg = 0.1);
 

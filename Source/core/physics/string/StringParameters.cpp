@@ -59,7 +59,7 @@ StringParameters make(std::string name, double f0, double tension, double length
     s.massPerLength = massFor(tension, length, f0);
     s.bendingStiffness = EI;
     s.lossF = lossF;
-    s.stoppedLossF = 3.0 * lossF; // seed 001 Table 1: 23 -> 69 for the stopped cello D
+    s.stoppedLossF = 3.0 * lossF; // [Galluzzo2017] Table 1: 23 -> 69 for the stopped cello D
     s.lossB = lossB;
     s.lossA = lossA;
     s.torsionalWaveSpeed = ctOverC * s.waveSpeed();
@@ -72,15 +72,15 @@ StringParameters make(std::string name, double f0, double tension, double length
 std::vector<StringParameters> catalogue()
 {
     std::vector<StringParameters> c;
-    // Seed 001 Table 1, Galluzzo rig: open cello D3 ("Dominant"). Length from L = c / (2 f0).
+    // [Galluzzo2017] Table 1, Galluzzo rig: open cello D3 ("Dominant"). Length from L = c / (2 f0).
     StringParameters d3;
     d3.name = "cello-D3";
     d3.tension = 111.0;
     d3.massPerLength = 2.7e-3;
     d3.length = std::sqrt(111.0 / 2.7e-3) / (2.0 * 146.8);
-    d3.source = "seed 001 Table 1 (Galluzzo rig); length from c/(2 f0)";
+    d3.source = "[Galluzzo2017] Table 1 (Galluzzo rig); length from c/(2 f0)";
     c.push_back(d3);
-    // Seed 001 Table 1, Schumacher rig: steel violin E string on a monochord, 693 Hz.
+    // [Galluzzo2017] Table 1, Schumacher rig: steel violin E string on a monochord, 693 Hz.
     StringParameters e5;
     e5.name = "violin-E5";
     e5.tension = 72.5;
@@ -94,12 +94,12 @@ std::vector<StringParameters> catalogue()
     e5.torsionalWaveSpeed = 4620.0;
     e5.torsionalQ = 30.0;
     e5.torsionalImpedance = 0.61;
-    e5.source = "seed 001 Table 1 (Schumacher rig, 693 Hz monochord); stopped eta_F an estimate";
+    e5.source = "[Galluzzo2017] Table 1 (Schumacher rig, 693 Hz monochord); stopped eta_F an estimate";
     c.push_back(e5);
     // The other strings: tensions are typical published values for medium-gauge synthetic-core strings
     // (manufacturers' tension charts give 105-145 N for cello, 40-75 N for violin); mass per length follows
     // from tension, length and pitch. Bending stiffness, losses and torsion are ESTIMATES scaled from the two
-    // measured strings of the seed (wound strings like the cello D, plain steel like the violin E).
+    // measured strings of [Galluzzo2017] (wound strings like the cello D, plain steel like the violin E).
     const double cello = 0.69, violin = 0.325;
     c.push_back(make("cello-C2", 65.41, 118.0, cello, 6.0e-4, 23, 12.5, 0.11, 3.7, 3.3, 45,
                      "estimate: tension typical chart value, EI/losses/torsion scaled from cello D3"));
@@ -119,7 +119,7 @@ std::vector<StringParameters> catalogue()
              "estimate: tension typical chart value, EI/losses/torsion between cello D3 and violin E5"));
     c.push_back(
         make("violin-E5-instrument", 659.26, 72.5, violin, 0.47e-4, 5, 0.2, 2.0, 11.1, 3.5, 30,
-             "seed 001 Table 1 violin E tension and losses, retuned to E5 = 659.26 Hz at L = 0.325 m"));
+             "[Galluzzo2017] Table 1 violin E tension and losses, retuned to E5 = 659.26 Hz at L = 0.325 m"));
     return c;
 }
 } // namespace

@@ -6,9 +6,9 @@
 namespace rosin::physics
 {
 
-/// One string as the seed's Table 1 describes it (seed 001). Loss coefficients are kept as the seed prints
+/// One string as Table 1 of [Galluzzo2017] describes it. Loss coefficients are kept as that table prints
 /// them (raw numbers); StringParameters::etaF() etc. apply the scale factors adopted in the physics
-/// reference §4.1: eta_F x 1e-5, eta_B x 1e-3, eta_A in 1/s.
+/// [Notes §4.1]: eta_F x 1e-5, eta_B x 1e-3, eta_A in 1/s.
 struct StringParameters
 {
     std::string name;                  ///< e.g. "cello-D3"
@@ -19,11 +19,11 @@ struct StringParameters
     double lossF = 23.0;               ///< eta_F as printed (x 1e-5)
     double lossB = 12.5;               ///< eta_B as printed (x 1e-3)
     double lossA = 0.11;               ///< eta_A, 1/s
-    double stoppedLossF = 69.0;        ///< eta_F when finger-stopped (seed 001 Table 1 bracket value)
+    double stoppedLossF = 69.0;        ///< eta_F when finger-stopped ([Galluzzo2017] Table 1 bracket value)
     double torsionalWaveSpeed = 758.0; ///< c_t, m/s
     double torsionalQ = 45.0;          ///< Q_t
     double torsionalImpedance = 1.8;   ///< Z_t, kg/s, referred to the string surface
-    std::string source;                ///< where the numbers come from ("seed 001 Table 1", "estimate: ...")
+    std::string source; ///< where the numbers come from ("[Galluzzo2017] Table 1", "estimate: ...")
 
     double waveSpeed() const;   ///< c = sqrt(P/m), m/s
     double impedance() const;   ///< Z0 = sqrt(P m), kg/s
@@ -32,9 +32,9 @@ struct StringParameters
     double etaF(bool stopped) const { return (stopped ? stoppedLossF : lossF) * 1e-5; }
     double etaB() const { return lossB * 1e-3; }
     double etaA() const { return lossA; }
-    /// Loss factor 1/Q of transverse mode n on a string of the given length, reference eq. (4.1).
+    /// Loss factor 1/Q of transverse mode n on a string of the given length, [Notes] eq. (4.1).
     double lossFactor(int n, double vibratingLength, bool stopped) const;
-    /// Angular frequency of transverse mode n (stiff string, pinned ends), reference eq. (4.2).
+    /// Angular frequency of transverse mode n (stiff string, pinned ends), [Notes] eq. (4.2).
     double modeAngularFrequency(int n, double vibratingLength) const;
 };
 

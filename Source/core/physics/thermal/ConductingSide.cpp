@@ -1,4 +1,4 @@
-// One solid's conduction memory (ConductingSide.h; reference eq. 2.9 with the washout of §2.3a).
+// One solid's conduction memory (ConductingSide.h; [Notes] eq. 2.9 with the washout of §2.3a).
 #include "core/physics/thermal/ConductingSide.h"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 #pragma once
-// One of the two solids that touch the contact disc (reference §2.3a): its conduction memory as the
+// One of the two solids that touch the contact disc ([Notes §2.3a]): its conduction memory as the
 // sum-of-exponentials history of eq. 2.9, u_m[n+1] = s r_m (u_m[n] + w_m Q[n]), with r_m = exp(-dt/tau_m),
 // w_m = c_m tau_m (1 - r_m) and s the washout of this step (1 for the stationary side and for a stuck
 // moving side; washout::decay for a sliding one). The surface temperature of the solid under the contact

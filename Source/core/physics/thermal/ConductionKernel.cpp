@@ -1,4 +1,4 @@
-// Disc-average half-space Green's function (reference eq. 2.5) and its non-negative SOE fit (eq. 2.8).
+// Disc-average half-space Green's function ([Notes] eq. 2.5) and its non-negative SOE fit (eq. 2.8).
 #include "core/physics/thermal/ConductionKernel.h"
 
 #include <compare>

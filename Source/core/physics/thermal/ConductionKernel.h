@@ -1,7 +1,7 @@
 #pragma once
 // Heat conduction from the contact disc into one of the two solids that touch it (the stationary one, and the
-// moving one while it sticks; reference §2.3a): the disc-average Green's function of a half-space and its
-// sum-of-exponentials (SOE) approximation. Reference §2.3.1 (eq. 2.5) and §2.5 (eqs. 2.8-2.9); script soe.py.
+// moving one while it sticks; [Notes §2.3a]): the disc-average Green's function of a half-space and its
+// sum-of-exponentials (SOE) approximation. [Notes §2.3.1] (eq. 2.5) and §2.5 (eqs. 2.8-2.9); script soe.py.
 #include <vector>
 
 namespace rosin::physics
@@ -31,16 +31,16 @@ class ConductionKernel
     /// Contact-average surface temperature rise (K) per joule deposited at t = 0 uniformly over a disc of
     /// radius a (m) on a half-space of conductivity K (W/m/K) and volumetric heat capacity rho c (J/m^3/K):
     ///   G_avg(t) = [1 - e^-u (I0(u) + I1(u))] / (pi a^2 rho c sqrt(pi kappa t)),  u = a^2 / (2 kappa t),
-    /// kappa = K / (rho c). Reference eq. 2.5 [D]. Units K/J; t in s (> 0).
+    /// kappa = K / (rho c). [Notes] eq. 2.5 [D]. Units K/J; t in s (> 0).
     static double green(double timeS, double radiusM, double conductivity,
                         double volumetricHeatCapacity) noexcept;
 
     /// int_0^inf G_avg dt = 8 / (3 pi^2 K a), K/W: mean temperature of a uniformly heated disc per watt
-    /// (reference §2.3.1, classical result).
+    /// ([Notes §2.3.1], classical result).
     static double steadyResistance(double radiusM, double conductivity) noexcept;
 
     /// int_0^inf G_avg(t) exp(-t / washoutTime) dt, K/W: the steady resistance of a surface whose heated
-    /// patch is carried away after ~washoutTime (the moving side while sliding; reference §2.3a). Simpson in
+    /// patch is carried away after ~washoutTime (the moving side while sliding; [Notes §2.3a]). Simpson in
     /// ln t. washoutTime <= 0 or infinite gives steadyResistance().
     static double washedOutResistance(double radiusM, double conductivity, double volumetricHeatCapacity,
                                       double washoutTime) noexcept;

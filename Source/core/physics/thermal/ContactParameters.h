@@ -1,5 +1,5 @@
 #pragma once
-// Geometry and materials of the rosin contact (seed 001 Table 2; reference §2.3-2.7).
+// Geometry and materials of the rosin contact ([Galluzzo2017] Table 2; [Notes §2.3-2.7]).
 #include <string>
 
 #include "core/physics/thermal/ThermalMaterial.h"
@@ -10,7 +10,7 @@ namespace rosin::physics
 /// How the real contact area grows with the normal force.
 enum class ContactScaling
 {
-    Coulomb, ///< A proportional to N (radius proportional to sqrt N): seed 001's choice
+    Coulomb, ///< A proportional to N (radius proportional to sqrt N): [Galluzzo2017]'s choice
     Hertz    ///< A proportional to N^(2/3) (radius proportional to N^(1/3)): single elastic contact
 };
 
@@ -31,13 +31,13 @@ struct ContactParameters
     ContactGeometry rig; ///< the bowing contact: Galluzzo rig by default
     ContactGeometry calibration{500e-6, 3.0, 10e-6, ContactScaling::Coulomb}; ///< steady-sliding rig
     ContactMaterials
-        materials; ///< rosin layer, stationary and moving solids (seed 001: acrylic rod on a string)
+        materials; ///< rosin layer, stationary and moving solids ([Galluzzo2017]: acrylic rod on a string)
     double ambientOffset = 0.0; ///< K: rosin temperature at rest minus the calibration's ambient
 };
 
-/// Seed 001 Table 2 contact for the Galluzzo rig (250 um at 1 N, 1 um layer).
+/// [Galluzzo2017] Table 2 contact for the Galluzzo rig (250 um at 1 N, 1 um layer).
 ContactParameters galluzzoContact();
-/// Seed 001 Table 2 contact for the Schumacher rig (200 um at 1 N, 1 um layer).
+/// [Galluzzo2017] Table 2 contact for the Schumacher rig (200 um at 1 N, 1 um layer).
 ContactParameters schumacherContact();
 
 } // namespace rosin::physics

@@ -1,4 +1,4 @@
-// Implicit time marching of the contact heat balance (reference eqs. 2.4, 2.7, 2.9 and §2.3a).
+// Implicit time marching of the contact heat balance ([Notes] eq. 2.4, 2.7, 2.9 and §2.3a).
 #include "core/physics/thermal/HeatBalance.h"
 
 #include <algorithm>
@@ -82,7 +82,7 @@ const HeatBalance::Local& HeatBalance::local(double slidingSpeed, double bowForc
     return local_;
 }
 
-// T[n] = (P + C T[n-1]/dt + H_s/g0_s + H_m/g0_m) / (C/dt + G_adv + 1/g0_s + 1/g0_m) (reference eq. 2.9 with
+// T[n] = (P + C T[n-1]/dt + H_s/g0_s + H_m/g0_m) / (C/dt + G_adv + 1/g0_s + 1/g0_m) ([Notes] eq. 2.9 with
 // both solids; the layer is thin, so both surfaces under it share its temperature).
 double HeatBalance::solveTemperature(double powerW, const Local& l) const noexcept
 {

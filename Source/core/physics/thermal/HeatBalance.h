@@ -1,10 +1,10 @@
 #pragma once
-// Single contact temperature of the rosin layer (seed 000; Smith & Woodhouse 2000 as reconstructed in
-// reference §2.3-2.5 with the correction of §2.3a): heat balance
-//     C dT/dt = P - Q_adv - Q_stat - Q_mov                                  (reference eq. 2.4)
+// Single contact temperature of the rosin layer ([Smith2000]; Smith & Woodhouse 2000 as reconstructed in
+// [Notes §2.3-2.5] with the correction of §2.3a): heat balance
+//     C dT/dt = P - Q_adv - Q_stat - Q_mov                                  ([Notes] eq. 2.4)
 // with layer capacity C = rho c pi a^2 delta and advection Q_adv = rho c w delta |dv| T (w = ratio x a) of
 // the layer's rosin, and conduction into BOTH neighbouring solids by convolution with the disc Green's
-// function (seed 000: "conduction into the two neighbouring solids"), each solid with its own material:
+// function ([Smith2000]: "conduction into the two neighbouring solids"), each solid with its own material:
 //  * the stationary side (string, wedge) always;
 //  * the moving side (rod, bow hair) the same way while the contact sticks; sliding replaces its surface
 //    patch, which washes its memory out over ~one contact width (Washout.h). Its fast-sliding limit is the
@@ -56,7 +56,7 @@ class HeatBalance
     /// The model's own steady conductance (W/K) at constant sliding speed and force: advection + both
     /// solids' discrete steady conductances. A time-stepped steady slide converges to T = P / this exactly.
     double steadyConductance(double slidingSpeed, double bowForce) const noexcept;
-    /// Analytic steady conductance (W/K), reference eq. 2.7 with §2.3a's moving side:
+    /// Analytic steady conductance (W/K), [Notes] eq. 2.7 with §2.3a's moving side:
     ///   G_ss = rho c w delta v + 1 / int G_avg,mov e^{-v t / ell} dt + 1 / int G_avg,stat dt,
     /// int G_avg,stat dt = 8 / (3 pi^2 K_stat a), ell = 1.2685 a (Washout.h).
     static double steadyConductance(const ContactGeometry& geometry, const ContactMaterials& materials,

@@ -1,4 +1,4 @@
-// Modified thermal friction law (seed 002 eqs. 6-13; reference §3).
+// Modified thermal friction law ([Woodhouse-thermal] eqs. 6-13; [Notes §3]).
 #include "core/physics/thermal/ModifiedThermalLaw.h"
 
 #include <algorithm>

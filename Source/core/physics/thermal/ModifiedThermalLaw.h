@@ -1,11 +1,11 @@
 #pragma once
-// Modified ("enhanced") thermal friction law of seed 002 (eqs. 6-9; reference §3):
+// Modified ("enhanced") thermal friction law of [Woodhouse-thermal] (eqs. 6-9; [Notes §3]):
 //     f = -K Fb h(|dv|) Y(T) sgn(dv),   K Y(T0) = 1,
 // with h the jump curve of a real bow (eq. 12) or of a rosin-coated rod (eq. 13). At a fixed temperature
 // it is a friction curve PowerLawCurve{c, x0, scale = K Y(T)} and is solved exactly with the hysteresis
 // rule (solveCurveJunction), so it can jump at the first slip. K Y(T) is calibrated so steady sliding
 // reproduces mu_steady (eq. 11): ThermalCalibration::ModifiedBow / ModifiedRod.
-// Hertz contact scaling (A ~ Fb^(2/3), reference §8.3): A = K Fb (Fb/N_ref)^(-1/3), so the force is
+// Hertz contact scaling (A ~ Fb^(2/3), [Notes §8.3]): A = K Fb (Fb/N_ref)^(-1/3), so the force is
 // multiplied by (Fb/N_ref)^(-1/3); with Coulomb scaling the factor is 1.
 #include "core/physics/friction/CurveJunctionSolver.h"
 #include "core/physics/friction/FrictionCurves.h"
@@ -20,8 +20,8 @@ class ModifiedThermalLaw final : public FrictionLaw
   public:
     enum class Variant
     {
-        Bow, ///< h(v) = 0.5 (|v| + 0.27)^-0.4 (seed 002 eq. 12)
-        Rod  ///< h(v) = 0.37 (|v| + 0.35)^-0.4 (seed 002 eq. 13)
+        Bow, ///< h(v) = 0.5 (|v| + 0.27)^-0.4 ([Woodhouse-thermal] eq. 12)
+        Rod  ///< h(v) = 0.37 (|v| + 0.35)^-0.4 ([Woodhouse-thermal] eq. 13)
     };
 
     ModifiedThermalLaw(const ContactParameters& contact, Variant variant);

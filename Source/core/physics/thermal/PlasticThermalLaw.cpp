@@ -1,4 +1,4 @@
-// Plastic thermal friction law (seed 000 eq. 4; reference §2.1-2.2, §2.5).
+// Plastic thermal friction law ([Smith2000] eq. 4; [Notes §2.1-2.2], §2.5).
 #include "core/physics/thermal/PlasticThermalLaw.h"
 
 #include <algorithm>
@@ -75,7 +75,7 @@ JunctionSolution PlasticThermalLaw::step(const JunctionInput& in, double creepRe
     // Predictor: temperature with last sample's power (Woodhouse's order, one-sample lag).
     JunctionSolution s = creepingSolution(
         solveCharacteristic(dvh, twoZ, frictionLimit(thermal_.predict(Fb), Fb)), safe, creepResistance);
-    // Corrector: temperature with this sample's power, solve once more (reference §2.5 refinement).
+    // Corrector: temperature with this sample's power, solve once more ([Notes §2.5] refinement).
     s = creepingSolution(solveCharacteristic(dvh, twoZ, frictionLimit(thermal_.predict(s, Fb), Fb)), safe,
                          creepResistance);
     thermal_.commit(s, Fb);

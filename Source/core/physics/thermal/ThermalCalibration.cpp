@@ -1,4 +1,4 @@
-// Steady-sliding calibration of the thermal friction laws (reference §2.4, §3.2).
+// Steady-sliding calibration of the thermal friction laws ([Notes §2.4], §3.2).
 #include "core/physics/thermal/ThermalCalibration.h"
 
 #include <algorithm>
@@ -18,10 +18,10 @@ double ThermalCalibration::targetMu(CalibrationQuantity q, double v) noexcept
     {
     case CalibrationQuantity::YieldStress:
     case CalibrationQuantity::Viscosity:
-        return ClassicalCurve{}.mu(x); // seed 001 eq. 1 (= seed 000 eq. 2)
+        return ClassicalCurve{}.mu(x); // [Galluzzo2017] eq. 1 (= [Smith2000] eq. 2)
     case CalibrationQuantity::ModifiedBow:
     case CalibrationQuantity::ModifiedRod:
-        return steadySlidingPowerLaw().mu(x); // seed 002 eq. 11
+        return steadySlidingPowerLaw().mu(x); // [Woodhouse-thermal] eq. 11
     }
     return 0.0;
 }
@@ -30,9 +30,9 @@ double ThermalCalibration::jumpCurve(CalibrationQuantity q, double v) noexcept
 {
     const double x = std::abs(v);
     if (q == CalibrationQuantity::ModifiedBow)
-        return bowJumpCurve().mu(x); // seed 002 eq. 12
+        return bowJumpCurve().mu(x); // [Woodhouse-thermal] eq. 12
     if (q == CalibrationQuantity::ModifiedRod)
-        return rodJumpCurve().mu(x); // seed 002 eq. 13
+        return rodJumpCurve().mu(x); // [Woodhouse-thermal] eq. 13
     return 1.0;
 }
 
@@ -52,11 +52,11 @@ void ThermalCalibration::build(const ContactParameters& contact, double sampleRa
         switch (q)
         {
         case CalibrationQuantity::YieldStress:
-            return F * mu / area; // seed 000 eq. 4 with the calibration contact
+            return F * mu / area; // [Smith2000] eq. 4 with the calibration contact
         case CalibrationQuantity::Viscosity:
-            return F * mu * delta / (area * v); // seed 000 eq. 3 solved for eta
+            return F * mu * delta / (area * v); // [Smith2000] eq. 3 solved for eta
         default:
-            return mu / jumpCurve(q, v); // seed 002 eq. 9 with K Y(T0) = 1 (eq. 8)
+            return mu / jumpCurve(q, v); // [Woodhouse-thermal] eq. 9 with K Y(T0) = 1 (eq. 8)
         }
     };
 

@@ -1,21 +1,22 @@
 #pragma once
 // Temperature-dependent material functions of the thermal friction laws, calibrated so that steady
-// sliding on the CALIBRATION rig (seed 001 Table 2: 500 um at 3 N, 10 um layer) reproduces a measured
-// steady-sliding curve (reference §2.4, §3.2; seed 000 "requiring ... reproduce the measured
+// sliding on the CALIBRATION rig ([Galluzzo2017] Table 2: 500 um at 3 N, 10 um layer) reproduces a measured
+// steady-sliding curve ([Notes §2.4], §3.2; [Smith2000] "requiring ... reproduce the measured
 // steady-sliding behaviour").
 //
 // Steady map: T_ss(v) = F_cal mu(v) v / G_ss(v) on a log grid of v in [kMinSpeed, kMaxSpeed], where G_ss
 // is the heat model's OWN steady conductance (HeatBalance::steadyConductance, i.e. the discrete SOE
 // scheme at the same time step), so that a time-stepped steady slide converges to the curve exactly.
 // Inverting T_ss gives v(T) and hence:
-//   YieldStress:  tau_y(T) = F_cal mu_classical(v) / A_cal               (Pa; seed 000 eq. 4)
-//   Viscosity:    eta(T)   = F_cal mu_classical(v) delta_cal / (A_cal v)  (Pa s; seed 000 eq. 3)
-//   ModifiedBow:  K Y(T)   = mu_steady(v) / h_bow(v)                      (seed 002 eqs. 9, 11, 12)
-//   ModifiedRod:  K Y(T)   = mu_steady(v) / h_rod(v)                      (seed 002 eqs. 9, 11, 13)
-// (the modified laws use T_ss computed with mu_steady, seed 002 eq. 9).
+//   YieldStress:  tau_y(T) = F_cal mu_classical(v) / A_cal               (Pa; [Smith2000] eq. 4)
+//   Viscosity:    eta(T)   = F_cal mu_classical(v) delta_cal / (A_cal v)  (Pa s; [Smith2000] eq. 3)
+//   ModifiedBow:  K Y(T)   = mu_steady(v) / h_bow(v)                      ([Woodhouse-thermal] eqs. 9, 11,
+//   12) ModifiedRod:  K Y(T)   = mu_steady(v) / h_rod(v)                      ([Woodhouse-thermal] eqs. 9,
+//   11, 13)
+// (the modified laws use T_ss computed with mu_steady, [Woodhouse-thermal] eq. 9).
 //
 // Monotone range: T_ss must increase with v to be invertible. If it has a maximum (mu_steady with an
-// advection term peaks near 0.3-1 m/s; reference §2.4 "Caution"), the table stops at the maximum.
+// advection term peaks near 0.3-1 m/s; [Notes §2.4] "Caution"), the table stops at the maximum.
 // Lookup clamps: T <= 0 gives the ambient value; above the table's top the top value is held.
 // Between T = 0 and the first grid temperature the value is interpolated linearly in T (yield stress,
 // K Y) or held at the first grid value (viscosity, which would diverge like 1/T: creep below kMinSpeed is
@@ -51,7 +52,7 @@ class ThermalCalibration
 
     /// Steady-sliding target curve of the quantity: mu_classical (plastic, viscous) or mu_steady (modified).
     static double targetMu(CalibrationQuantity quantity, double speed) noexcept;
-    /// Jump curve h(v) of the modified law (seed 002 eqs. 12-13); 1 for the other quantities.
+    /// Jump curve h(v) of the modified law ([Woodhouse-thermal] eqs. 12-13); 1 for the other quantities.
     static double jumpCurve(CalibrationQuantity quantity, double speed) noexcept;
 
     double ambientValue() const noexcept { return ambientValue_; }

@@ -1,7 +1,7 @@
 #pragma once
 // What every thermal friction law carries (plastic, viscous, modified): the contact's heat balance, the
 // calibrated table of its material property against temperature, and the power and sliding speed of the
-// previous sample, which the predictor uses (Woodhouse's order, reference §2.5).
+// previous sample, which the predictor uses (Woodhouse's order, [Notes §2.5]).
 #include "core/physics/friction/FrictionLaw.h"
 #include "core/physics/thermal/ContactParameters.h"
 #include "core/physics/thermal/HeatBalance.h"

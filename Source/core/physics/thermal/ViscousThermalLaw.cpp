@@ -1,4 +1,4 @@
-// Viscous thermal friction law (seed 000 eq. 3; seed 002 eq. 2).
+// Viscous thermal friction law ([Smith2000] eq. 3; [Woodhouse-thermal] eq. 2).
 #include "core/physics/thermal/ViscousThermalLaw.h"
 
 #include <algorithm>

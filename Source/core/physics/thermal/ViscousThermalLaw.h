@@ -1,9 +1,9 @@
 #pragma once
 // "Viscous" thermal friction law: a Newtonian rosin layer of thickness delta with temperature-dependent
-// viscosity (seed 000 eq. 3; seed 002 eq. 2):
+// viscosity ([Smith2000] eq. 3; [Woodhouse-thermal] eq. 2):
 //     f = -(A(Fb) eta(T) / delta_rig) dv = -c dv.
 // At fixed T the law is linear, so the load-line solve is closed-form: dv = 2Z dvh / (2Z + c). There is no
-// sticking barrier (seed 002 Fig. 4): the string always creeps, if only at ~1e-8 of dvh when cold.
+// sticking barrier ([Woodhouse-thermal] Fig. 4): the string always creeps, if only at ~1e-8 of dvh when cold.
 // eta(T) is calibrated on the steady-sliding rig (ThermalCalibration::Viscosity).
 #include "core/physics/friction/FrictionLaw.h"
 #include "core/physics/thermal/ThermalContact.h"

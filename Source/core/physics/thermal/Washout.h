@@ -1,5 +1,5 @@
 #pragma once
-// Sliding replaces the moving solid's surface patch under the contact (reference §2.3a): material that has
+// Sliding replaces the moving solid's surface patch under the contact ([Notes §2.3a]): material that has
 // passed through carries its heat away and fresh material arrives at ambient, so the moving side's
 // conduction memory decays by exp(-|dv| t / ell) on top of diffusion (a lumped form of plug flow).
 // The washout length ell follows from the fast-sliding limit of the same lumped model, solved exactly: a disc
@@ -8,10 +8,11 @@
 // the disc takes G = A e sqrt(v / a) x 2 sqrt(2) B(1/2, 5/4) / pi^(3/2) = 0.8879 A e sqrt(v / a).
 // The exponential washout's limit is A e sqrt(v / ell) (int_0^inf e^{-v t / ell} / sqrt(pi t) dt =
 // sqrt(ell / v)), so ell = a / 0.8879^2 = 1.2685 a: about one contact width (2a), as §2.3a says.
-// (Reference §2.3's quasi-steady pi a^2 e sqrt(3 v / (8 a)), quoted from WG25 via a secondary source and
-// argued from a penetration depth, is 31 % below this exact limit; tests/physics/thermal/WashoutTest.cpp.)
-// Both functions take x = |dv| dt / ell, the share of a washout length slid in one time step; they are
-// shared by HeatBalance and PlasticLanes so that a lane and a voice step identically.
+// ([Notes §2.3]'s quasi-steady pi a^2 e sqrt(3 v / (8 a)), quoted from WG25 via a secondary source and
+// argued from a penetration depth, is 31 % below this exact limit;
+// tests/core/physics/thermal/WashoutTest.cpp.) Both functions take x = |dv| dt / ell, the share of a washout
+// length slid in one time step; they are shared by HeatBalance and PlasticLanes so that a lane and a voice
+// step identically.
 #include <cmath>
 
 namespace rosin::physics::washout

@@ -142,8 +142,8 @@ namespace
 // Under a velocity constraint (a sticking bow) a sampled mode yields as if its compliance were
 // (x / sin x)^2 / omega^2, x = omega T / 2, not 1/omega^2: twice too soft at the 0.45 fs mode limit. Scaling
 // the bow's coupling to mode n by sin(x)/x on both the force input and the velocity output restores each
-// mode's static compliance at the bow (the quasi-static pre-slip rise of seed 002 eqs. 3-5), keeps the bow
-// port reciprocal, and tames the top modes' share of the bow admittance.
+// mode's static compliance at the bow (the quasi-static pre-slip rise of [Woodhouse-thermal] eqs. 3-5), keeps
+// the bow port reciprocal, and tames the top modes' share of the bow admittance.
 double staticCorrection(const ModalBank& bank, int i, double T)
 {
     const double x = 0.5 * bank.s[i].imag() * T;
@@ -200,7 +200,7 @@ void BowedStringVoice::Impl::updateWeights()
     const double kappa = (1.0 - beta - A1) / D;
     double y0 = Ya - Bv * U2 * kappa + (1.0 - beta) * U1 * kappa;
     // A string answers a sudden force at a point with v = f / (2 Z_eff) at once (McIntyre, Schumacher &
-    // Woodhouse; reference eq. 1.2). The modal bank stops at 0.45 fs, so it spreads that delta over two
+    // Woodhouse; [Notes] eq. 1.2). The modal bank stops at 0.45 fs, so it spreads that delta over two
     // samples and its admittance almost vanishes at Nyquist: a sticking contact (a velocity constraint) then
     // lets the friction force ring at Nyquist. Adding c (1 - z^-1), c = 1/(2 Z_eff) - y0, moves the spread
     // back into the current sample: the instantaneous admittance becomes the physical one, the admittance at
@@ -335,7 +335,7 @@ double BowedStringVoice::solveJunction(const BowInput& in, double otherStringsFo
     const double vh = s.j.loadLineHistory(h, otherStringsForce);
     s.bowVelocity = in.bowVelocity;
     s.solution = friction_->solve({vh - in.bowVelocity, 1.0 / s.j.y0, std::max(0.0, in.bowForce)});
-    // Bridge force F = R - c G, G the total force on the bridge (reference §5.1, one string per port).
+    // Bridge force F = R - c G, G the total force on the bridge ([Notes §5.1], one string per port).
     return s.j.bridgeForceBeforeCoupling(s.solution.frictionForce, h);
 }
 

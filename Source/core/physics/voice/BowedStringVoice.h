@@ -2,7 +2,7 @@
 // One bowed string: transverse and torsional modes of a stiff string, a modal body at the bridge, and a
 // friction law at the bow, advanced one sample at a time.
 //
-// Formulation (physics reference §1, §4.4, §5.1; README "How the physics is computed"):
+// Formulation ([Notes §1, §4.4, §5.1]; Resources/docs/physics.md, "The model"):
 //  * string displacement y(x,t) = u(t)(1 - x/L) + sum_n q_n(t) sin(n pi x/L), bridge at x = 0, u the
 //    bridge (body) displacement: the quasi-static term carries the moving bridge exactly;
 //  * every mode is a second-order oscillator discretised by impulse invariance with a half-sample direct

@@ -2,9 +2,9 @@
 // The per-sample algebra around the bow junction, written once for every engine that advances a voice:
 // BowedStringVoice (alone on its body, or on a body shared with other strings) and VoiceLanes (eight copies,
 // lane by lane). From the string's and the body's histories it gives the load line's history v_h, so that
-// the friction law solves f on v = v_h + y0 f, and, with f, the string's force on the bridge (README "How the
-// physics is computed"; reference §1.1 and §5.1). The coefficients are the voice's discrete system at its
-// bow position (BowedStringVoice.cpp, updateWeights).
+// the friction law solves f on v = v_h + y0 f, and, with f, the string's force on the bridge
+// (Resources/docs/physics.md, "The model"; [Notes §1.1] and §5.1). The coefficients are the voice's discrete
+// system at its bow position (BowedStringVoice.cpp, updateWeights).
 namespace rosin::physics
 {
 

@@ -9,15 +9,15 @@ namespace rosin::physics
 
 struct VoiceConfig
 {
-    StringParameters string;             ///< default: open cello D3 of the Galluzzo rig (seed 001 Table 1)
-    BodyParameters body;                 ///< bridge admittance; empty (the default) is a rigid bridge
-    bool torsion = true;                 ///< include torsional modes (seed 001 Fig. 12e turns them off)
-    bool bendingStiffness = true;        ///< include EI (seed 001 Fig. 12f turns it off)
+    StringParameters string;      ///< default: open cello D3 of the Galluzzo rig ([Galluzzo2017] Table 1)
+    BodyParameters body;          ///< bridge admittance; empty (the default) is a rigid bridge
+    bool torsion = true;          ///< include torsional modes ([Galluzzo2017] Fig. 12e turns them off)
+    bool bendingStiffness = true; ///< include EI ([Galluzzo2017] Fig. 12f turns it off)
     double maxModeFrequencyRatio = 0.45; ///< keep modes below this fraction of the sample rate
     int maxTransverseModes = 400;        ///< hard cap on transverse modes
     int maxTorsionalModes = 80;          ///< hard cap on torsional modes
     /// Multiplies every transverse mode's loss factor: string losses above the nominal loss law (the
-    /// discrepancy workflow's "extra-string-damping"; 1 = the seed's law).
+    /// discrepancy workflow's "extra-string-damping"; 1 = the loss law of [Galluzzo2017] Table 1).
     double lossScale = 1.0;
 };
 

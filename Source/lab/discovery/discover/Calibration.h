@@ -1,5 +1,5 @@
 #pragma once
-// Calibration before attribution (issue 16 item 1): the nuisance parameters (NuisanceParameters.h) fitted to
+// Calibration before attribution: the nuisance parameters (NuisanceParameters.h) fitted to
 // the training trials within their priors, before any effect is tried, so each candidate effect competes
 // against a baseline that is as right as the lab's tolerances allow, not against one that is off for
 // reasons that have nothing to do with it.

@@ -1,5 +1,5 @@
 #pragma once
-// rosin discover's engine (issue 5 item 1), JUCE-free: from a dataset and the features of its measured
+// rosin discover's engine, JUCE-free: from a dataset and the features of its measured
 // trials, the baseline's gap per feature, the effect search, and the gap after. The command reads the
 // trial files (discovery/io) and writes the outputs (DiscoveryReport.h).
 #include <cstdint>

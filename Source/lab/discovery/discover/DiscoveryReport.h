@@ -1,5 +1,5 @@
 #pragma once
-// rosin discover's outputs: OUT.json (issue 5's schema) and the researcher's report in Markdown.
+// rosin discover's outputs: OUT.json (the schema of discover.md) and the researcher's report in Markdown.
 //   { "dataset", "trialsUsed", "trialsSkipped", "baseline": {friction, contact, body, string},
 //     "gapBefore", "features": [{name, unit, scatter, scatterMethod, trials, gapBefore, gapAfter, where,
 //     whereAfter}], "steps": [{effect, parameters{}, gapAfter, heldOutGain, pValue, evidence, tried[]}],

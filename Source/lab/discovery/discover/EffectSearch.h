@@ -1,5 +1,5 @@
 #pragma once
-// The effect search of rosin discover (issue 5, issue 16): every effect of the EffectCatalog is fitted on a
+// The effect search of rosin discover: every effect of the EffectCatalog is fitted on a
 // training half of the trials, on top of the calibrated baseline (Calibration.h), and scored on the other
 // half; the best significant one is adopted, and the search repeats on what remains (at most three).
 //   Split: a checkerboard over the grid, (beta + force + motion index) even -> training, odd -> held out

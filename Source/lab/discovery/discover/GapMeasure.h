@@ -18,7 +18,7 @@
 //     model's loss: losing the motion gains nothing on a feature, however wrong the feature was.
 //   A category (the regime) compares as same (z = 0) or different (z = 1 / sqrt(q),
 //   q its mismatch rate, at most 3).
-//   Noise model (issue 16 item 2): Student-t with kStudentNu = 4 degrees of freedom, i.e. a trial's loss is
+//   Noise model: Student-t with kStudentNu = 4 degrees of freedom, i.e. a trial's loss is
 //   rho(z) = nu ln(1 + z^2 / nu) (its negative log-likelihood up to a constant, scaled so rho ~ z^2 for
 //   small z). It grows without bound, so shrinking a 6-sigma misfit to 1 sigma counts (9.2 -> 0.9), but
 //   only logarithmically, so one chaotic attack 20 sigma off (a transient of 14 periods against 5, where 1 %

@@ -1,20 +1,20 @@
 #pragma once
 // How far two string models with the same physics still disagree after calibration, per feature: the
-// model-form tolerance of the verdict (issue 16). The verdict asks whether what remains after calibration and
+// model-form tolerance of the verdict. The verdict asks whether what remains after calibration and
 // the adopted effects is more than the measurement's scatter explains; against a measurement that no model
 // of this one's form made, "the scatter" must include what any second model with the same physics would
 // leave. Measured, not assumed: Rosin against the project's independent generator (a digital waveguide with
 // its own heat balance, `rosin synth-data --generator independent`) on Schelleng scans (12 x 12) with nothing
-// hidden, drawn with seeds 17 and 23, which neither the README's table nor a test uses: tau^2 =
+// hidden, drawn with seeds 17 and 23, which neither the discover page's tables nor a test uses: tau^2 =
 // mean(d^2 - sigma^2) over the 50 trials where the calibrated model and the measurement both show Helmholtz
 // motion, d = measured - model, sigma the trial's scatter. The pitch's part is not the tension: seed 17's
 // string plays 2.66 cents flatter than the calibrated model (mean; tension x1.02, drawn x1.0185), yet a
 // tension step matching the median pitch difference did not lower the training objective on seeds 17, 23
 // or 31 (tried in the calibration, withdrawn).
 // The steady level (read in every regime) was first left at 0: over seeds 17 and 23 its differences stayed
-// within the scatter (mean z^2 0.85 over 280 trials, as calibrated then). Re-measured on 28 November 2026
-// over six sets (seeds 17, 23, 41, 43, 47, 53; none is the README's seed 31 or a test's), calibrated as
-// rosin discover calibrates now, with the sigma that includes each trial's sensitivity: tau^2 per seed
+// within the scatter (mean z^2 0.85 over 280 trials, as calibrated then). Re-measured
+// over six sets (seeds 17, 23, 41, 43, 47, 53; none is the discover page's seed 31 or a test's), calibrated
+// as rosin discover calibrates now, with the sigma that includes each trial's sensitivity: tau^2 per seed
 // 0.33, -0.20, 0.53, 0.16, -0.18, 0.30 dB^2 (140 trials each), pooled 0.156, tau 0.4 dB; the same six sets
 // give 2.0 cents for the pitch and 1.50 dB for the tilt (pooled over 152 trials), as below. Without it the
 // verdict on such a set turned on the calibration's pick between near-equal optima (seed 43: p 9e-5; seed

@@ -13,7 +13,7 @@
 //   firstSlipTime    t1, s (the slip at the bow: the first fall minus the travel time beta P / 2)
 //   transientPeriods periods from t1 to lasting Helmholtz motion (analysis::measureTransient on the force's
 //   slip
-//                    onsets), capped at 20 (the seed's "not reached" counts as 20)
+//                    onsets), capped at 20 ([Galluzzo2017]'s "not reached" counts as 20)
 //   pitchCents       in Helmholtz motion: 1200 log2(P / P_m) over the regime's window (below), the
 //                    flattening of the Helmholtz period (analysis::classifyFromBridgeForce's period refined
 //                    to a fraction of a sample by analysis::refinedPeriod: one sample is 5.8 cents at a cello
@@ -30,7 +30,7 @@
 //                    (Z0 = sqrt(T mu), v_b the bow's mean speed over the window), dB: how much of the bow's
 //                    drive the string's motion keeps (losses, rounded corners, a gauge's gain lower it).
 //                    Read in raucous and multiple-slip motion too, where a Schelleng scan has most of its
-//                    cells (issue 16 item 5: 60 % of a 12 x 12 scan is raucous, 20 % Helmholtz): there it
+//                    cells (60 % of a 12 x 12 scan is raucous, 20 % Helmholtz): there it
 //                    follows the friction and the losses as well, so a contact or damping effect shows
 //                    beyond the few Helmholtz cells; a regime that differs between the two sides is the
 //                    regime's evidence, the level compares the amplitudes as they are. In

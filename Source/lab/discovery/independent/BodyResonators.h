@@ -4,9 +4,9 @@
 // velocity response to a force, h(t) = (1/m) e^{-s t} (cos wd t - (s/wd) sin wd t), is sampled (times the
 // step) with the half-weight correction at t = 0, where h jumps: H(z) = T sum_n h(nT) z^-n - T h(0)/2. That
 // keeps the bank's instantaneous answer y0 = sum T / (2 m_k) finite and its passband true to the continuous
-// admittance (reference eq. 5.2), and it is a different discretisation from Rosin's.
+// admittance ([Notes] eq. 5.2), and it is a different discretisation from Rosin's.
 //
-// Coupled to a waveguide end through reference eq. (5.1a): the bridge velocity is history + y0 F.
+// Coupled to a waveguide end through [Notes] eq. (5.1a): the bridge velocity is history + y0 F.
 #include <vector>
 
 #include "core/physics/body/BodyParameters.h"

@@ -1,5 +1,5 @@
 #pragma once
-// The friction solve of one sample (reference §2.2 with §2.5's coupling, made implicit in the step's own
+// The friction solve of one sample ([Notes §2.2] with §2.5's coupling, made implicit in the step's own
 // heating): the plastic law f = A tau_y(T) with the contact temperature of ContactHeat, plus the own-form
 // effects (OwnEffects.h) that act on the static limit and on sticking.
 //

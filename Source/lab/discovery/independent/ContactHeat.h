@@ -1,5 +1,5 @@
 #pragma once
-// The independent generator's heat balance for the rosin contact (reference §2.3, §2.3a; seed 000: heating
+// The independent generator's heat balance for the rosin contact ([Notes §2.3], §2.3a; [Smith2000]: heating
 // balanced by conduction into both solids, advection of cold rosin, and the layer's heat capacity), written
 // as a finite-difference chain, not Rosin's Green's-function convolution:
 //
@@ -10,7 +10,7 @@
 // shears uniformly, so half of a 2a-wide disc's flow passes). Each solid is a 1-D conductor whose section
 // widens with depth, A(x) = pi a^2 (1 + x/l)^2 with l = 8a/(3 pi): at audio time scales (depth << a) that is
 // 1-D conduction through the contact disc, and in steady state it has exactly the disc's mean steady
-// conductance (3 pi^2/8) K a (reference eq. 2.7, the integral of the disc Green's function). The grid is
+// conductance (3 pi^2/8) K a ([Notes] eq. 2.7, the integral of the disc Green's function). The grid is
 // geometric (half a diffusion length of one step at the surface, x1.25 per node, 200 a deep).
 //
 // The moving solid conducts like the stationary one while the contact sticks; while it slides, its surface

@@ -1,5 +1,5 @@
 #pragma once
-// Bending stiffness in the waveguide (reference §4.2, f_n = n f0 sqrt(1 + B n^2)): a stiff string's higher
+// Bending stiffness in the waveguide ([Notes §4.2], f_n = n f0 sqrt(1 + B n^2)): a stiff string's higher
 // partials travel faster, so the loop's delay must fall with frequency. A cascade of M equal first-order
 // allpasses (a + z^-1) / (1 + a z^-1) with a < 0 has a phase delay that falls from (1 - a)/(1 + a) per
 // section at DC; a is fitted (least squares over the partials up to harmonic ~60 or 10 kHz) to the fall the

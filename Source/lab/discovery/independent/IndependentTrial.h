@@ -23,7 +23,7 @@ struct IndependentRig
     physics::BodyParameters body; ///< no modes: rigid bridge
     bool torsion = true;
     bool bendingStiffness = true; ///< EI in the loss law (and in the dispersion allpass when that is on)
-    /// The stiff string's dispersion allpass (DispersionAllpass), part of the stated physics (reference §4.2)
+    /// The stiff string's dispersion allpass (DispersionAllpass), part of the stated physics ([Notes §4.2])
     /// whenever bendingStiffness is on. Without it the Helmholtz corner stays too sharp: the bridge force
     /// came out 3.5-4.5 dB brighter (harmonic tilt) than Rosin's stiff modal string.
     bool dispersion = true;

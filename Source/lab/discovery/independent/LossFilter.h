@@ -1,5 +1,5 @@
 #pragma once
-// Per-round-trip loss of one waveguide segment (reference §4.1, "DWG" bullet): a wave that travels for a time
+// Per-round-trip loss of one waveguide segment ([Notes §4.1], "DWG" bullet): a wave that travels for a time
 // tau at frequency f loses the factor exp(-pi eta(f) f tau), eta = 1/Q the string's loss law. A one-pole
 // low-pass g (1 - p) / (1 - p z^-1) is fitted to that target at two frequencies (the fundamental, where the
 // decay time is measured, and a higher partial, which sets how fast the corner of the Helmholtz wave rounds
@@ -13,7 +13,7 @@ namespace rosin::discovery
 /// The loss factor eta(f) = 1/Q of a wave at frequency f (Hz).
 using LossLaw = std::function<double(double frequencyHz)>;
 
-/// Transverse loss law of reference eq. (4.1) for a stiff string (P tension, m mass per length, EI bending
+/// Transverse loss law of [Notes] eq. (4.1) for a stiff string (P tension, m mass per length, EI bending
 /// stiffness; etaF, etaB dimensionless, etaA in 1/s), plus a frequency-independent extra 1/Q and a factor on
 /// the bending term (the generator's extra-damping forms; 0 and 1 for the nominal law).
 LossLaw stringLossLaw(double tension, double massPerLength, double bendingStiffness, double etaF, double etaB,

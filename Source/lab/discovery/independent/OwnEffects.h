@@ -7,7 +7,8 @@
 //                        limit x (1 + gain (1 - exp(-t_hold / time)))       (catalog: logarithmic growth)
 //   breakaway-jump       a cold breakaway: the static limit exceeds the plastic value by a margin that fades
 //                        as the contact warms, limit x (1 + margin exp(-T / warmth)); sliding friction stays
-//                        plastic, so the first slip releases with a jump   (catalog: seed 002's modified law)
+//                        plastic, so the first slip releases with a jump   (catalog: [Woodhouse-thermal]'s
+//                        modified law)
 //   hertz-contact        contact area ~ F^exponent, equal to the Coulomb area at a reference force
 //                        (catalog: exactly 2/3, referenced at the rig's 1 N)
 //   sticking-creep       Bingham-like: a nominally stuck contact creeps only where the force exceeds a share

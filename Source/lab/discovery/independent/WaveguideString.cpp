@@ -80,7 +80,7 @@ double WaveguideString::reflectAtBridge(double incident) noexcept
         bridgeForce_ = 2.0 * z0_ * incident;
         return -incident;
     }
-    // Reference eq. (5.1a): string velocity at the bridge = bridge velocity = history + y0 F.
+    // [Notes] eq. (5.1a): string velocity at the bridge = bridge velocity = history + y0 F.
     const double y = body_.directAdmittance() * z0_;
     const double reflected = (body_.historyVelocity() + (y - 1.0) * incident) / (1.0 + y);
     bridgeForce_ = z0_ * (incident - reflected);

@@ -1,6 +1,6 @@
 #pragma once
 // The independent generator's string: a digital waveguide in the manner of McIntyre, Schumacher and Woodhouse
-// (reference §1.1-1.2), not Rosin's modal sum. The bow divides the string into a bridge-side segment (beta L)
+// ([Notes §1.1-1.2]), not Rosin's modal sum. The bow divides the string into a bridge-side segment (beta L)
 // and a nut-side segment ((1 - beta) L); on each, velocity waves run to the far end and back through a
 // fractional delay line with the segment's share of the string's losses (LossFilter). The bow point sees
 // v = v_h + f (1/(2 Z0) + 1/(2 Zt)): the history v_h is the sum of the waves arriving now, and the friction
@@ -8,7 +8,7 @@
 // angular velocities, because the bow acts at the string's surface).
 //
 // Ends: the nut and both torsional ends reflect rigidly (-1); the bridge is rigid or a body (BodyResonators,
-// reference eq. 5.1a). The force on the bridge is Z0 (v_incident - v_reflected) (reference §5.1).
+// [Notes] eq. 5.1a). The force on the bridge is Z0 (v_incident - v_reflected) ([Notes §5.1]).
 #include <cstddef>
 
 #include "lab/discovery/independent/BodyResonators.h"

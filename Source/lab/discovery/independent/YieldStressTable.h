@@ -1,15 +1,17 @@
 #pragma once
-// The plastic law's material function tau_y(T) (seed 000 eq. 4: friction = contact area x shear yield stress
-// of the softened rosin), calibrated the independent generator's own way: steady sliding on the calibration
-// rig (seed 001 Table 2: 500 um at 3 N, 10 um layer) must reproduce the classical steady-sliding curve
-// (seed 000 eq. 2), so at each speed v of a log grid
+// The plastic law's material function tau_y(T) ([Smith2000] eq. 4: friction = contact area x shear yield
+// stress of the softened rosin), calibrated the independent generator's own way: steady sliding on the
+// calibration rig ([Galluzzo2017] Table 2: 500 um at 3 N, 10 um layer) must reproduce the classical
+// steady-sliding curve
+// ([Smith2000] eq. 2), so at each speed v of a log grid
 //     T_ss(v) = F mu(v) v x ContactHeat::steadyRise(v)     (the steady state of THIS heat model and step)
 //     tau_y(T_ss(v)) = F mu(v) / (pi a^2).
 // The table stops where T_ss stops rising (it must be invertible). Bowing with the rig's own contact then
-// gives a static coefficient 1.2 (a_rig / a_cal)^2 at ambient (reference §2.1: 0.90 on the Galluzzo rig).
+// gives a static coefficient 1.2 (a_rig / a_cal)^2 at ambient ([Notes §2.1]: 0.90 on the Galluzzo rig).
 //
 // Below the calibration's ambient (rosin colder than the rig's stated ambient) the table is extended
-// linearly with its mean slope over the first 5 K, capped at +25 %: cold rosin is harder (seed 001 §5.1).
+// linearly with its mean slope over the first 5 K, capped at +25 %: cold rosin is harder ([Galluzzo2017]
+// §5.1).
 #include <vector>
 
 #include "lab/discovery/independent/ContactHeat.h"
@@ -24,7 +26,7 @@ struct CalibrationContact
     double layerThickness = 10e-6; ///< m
 };
 
-/// Seed 000 eq. (2): 0.4 e^{-v/0.01} + 0.45 e^{-v/0.1} + 0.35.
+/// [Smith2000] eq. (2): 0.4 e^{-v/0.01} + 0.45 e^{-v/0.1} + 0.35.
 double classicalFriction(double speed);
 
 class YieldStressTable

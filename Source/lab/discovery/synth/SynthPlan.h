@@ -19,7 +19,7 @@
 namespace rosin::discovery
 {
 
-/// The measurement chain's fixed numbers (issue 5: seed 001's 0.5 Hz sensor high-pass, noise, jitter).
+/// The measurement chain's fixed numbers ([Galluzzo2017]'s 0.5 Hz sensor high-pass, noise, jitter).
 inline constexpr double kSensorHighpassHz = 0.5;
 /// Noise rms as a share of the typical (median) peak bridge force of the trials.
 inline constexpr double kNoiseShareOfPeak = 0.003;

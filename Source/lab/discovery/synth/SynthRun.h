@@ -3,11 +3,12 @@
 // threads, then measured as the laboratory would measure it (SensorChain: the force gauges' high-pass, the
 // noise floor; then the trial's fault, if it failed), and handed on in trial order.
 //
-// The noise floor is a property of the sensor, one number for the dataset: issue 5 asks for about 0.3 % of
-// the typical peak bridge force. It is set from a pilot of up to 8 trials spread over the grid (computed
-// first), as a laboratory sets its gain from a few test strokes; the median of their peak |bridge force|
-// times kNoiseShareOfPeak, rounded to 2 significant digits, becomes sensor.noiseRms. Only the pilot and the
-// few trials that finish out of order are held in memory, so a large scan needs no more than a small one.
+// The noise floor is a property of the sensor, one number for the dataset: about 0.3 % of
+// the typical peak bridge force, as the workflow's specification asks. It is set from a pilot of up to 8
+// trials spread over the grid (computed first), as a laboratory sets its gain from a few test strokes; the
+// median of their peak |bridge force| times kNoiseShareOfPeak, rounded to 2 significant digits, becomes
+// sensor.noiseRms. Only the pilot and the few trials that finish out of order are held in memory, so a large
+// scan needs no more than a small one.
 #include <cstddef>
 #include <functional>
 #include <vector>

@@ -1,6 +1,6 @@
 // The body as the voice realises it: a ModalBank of the body modes (ModeSpec{2 pi f, 1/Q}, input gain 1/m_k,
 // velocity output), driven by a unit force impulse. The DFT of the bridge-velocity impulse response is its
-// discrete admittance; it must match the modal formula BodyParameters::admittance (reference eq. 5.2).
+// discrete admittance; it must match the modal formula BodyParameters::admittance ([Notes] eq. 5.2).
 //
 // Why only below a fraction of fs: any discretisation departs from the continuous formula by O((f/fs)^2).
 // With the bank's impulse-invariant scheme with trapezoidal output averaging, one mode's discrete velocity
@@ -10,7 +10,7 @@
 // So: (1) the bank's own transfer function, built from its documented per-mode state model, is checked over
 // the whole band to round-off (this validates the measurement and the kernels, whatever the scheme);
 // (2) |Y| against eq. 5.2 is checked to fs/12 and fs/8 with few-% bounds; (3) the band-averaged Re Y, which
-// sets the energy the string loses to the body (reference §5.1), is checked to 0.5 % in octaves to 4 kHz.
+// sets the energy the string loses to the body ([Notes §5.1]), is checked to 0.5 % in octaves to 4 kHz.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -199,7 +199,7 @@ TEST(BodyAdmittance, DiscreteBodyMatchesModalFormulaInMagnitude)
 
 TEST(BodyAdmittance, DiscreteBodyDrainsTheRightPowerInOctaveBands)
 {
-    // The string loses energy to the body through Re Y (reference §5.1: eta_body = 2 Z0 Re Y / (pi n)).
+    // The string loses energy to the body through Re Y ([Notes §5.1]: eta_body = 2 Z0 Re Y / (pi n)).
     for (const std::string name : {"cello", "violin"})
     {
         const auto& m = measured(name);

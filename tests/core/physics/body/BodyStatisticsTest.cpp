@@ -1,5 +1,5 @@
-// The generated bodies: statistics of the synthetic high-frequency set (reference §5.3), determinism of the
-// generator, the wolf check of reference §5.2 (Schelleng minimum bow force, eq. 6.3), and the factory.
+// The generated bodies: statistics of the synthetic high-frequency set ([Notes §5.3]), determinism of the
+// generator, the wolf check of [Notes §5.2] (Schelleng minimum bow force, eq. 6.3), and the factory.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,7 +16,7 @@ using namespace rosin::physics;
 
 namespace ROSIN_FILE_LOCAL
 {
-// Requested modal densities (reference §5.3 item 1; the violin value is the one documented in the source) and
+// Requested modal densities ([Notes §5.3] item 1; the violin value is the one documented in the source) and
 // frequencies safely between the highest parametric mode and the crossover.
 constexpr double celloDensityPerHz = 0.07, celloHighFromHz = 500.0;
 constexpr double violinDensityPerHz = 0.023, violinHighFromHz = 700.0;
@@ -39,7 +39,7 @@ bool sameModes(const std::vector<BodyMode>& a, const std::vector<BodyMode>& b)
                       });
 }
 
-/// Schelleng/Raman minimum bow force for a dashpot bridge R = 1 / Re Y (reference eq. 6.3), cello D string.
+/// Schelleng/Raman minimum bow force for a dashpot bridge R = 1 / Re Y ([Notes] eq. 6.3), cello D string.
 double schellengMinimumForce(double realAdmittance)
 {
     constexpr double Z0 = 0.547, vb = 0.1, dmu = 0.8, beta = 0.1; // kg/s, m/s, -, -

@@ -1,5 +1,5 @@
-// The cantilever's contact against seed 000's design condition (about 55 K above ambient in steady sliding at
-// the rod speed) and against the steady-sliding curve it is calibrated on.
+// The cantilever's contact against [Smith2000]'s design condition (about 55 K above ambient in steady sliding
+// at the rod speed) and against the steady-sliding curve it is calibrated on.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,7 +11,7 @@
 using namespace rosin::physics;
 using namespace rosin::test::rig;
 
-// Calibrations (seed 000 chose its contact size by this condition), checked, not reproductions.
+// Calibrations ([Smith2000] chose its contact size by this condition), checked, not reproductions.
 TEST(CantileverContact, CalibratedRadiusGives55KelvinInSteadySliding)
 {
     const ContactParameters c = cantileverContact();
@@ -26,7 +26,7 @@ TEST(CantileverContact, CalibratedRadiusGives55KelvinInSteadySliding)
 
 TEST(CantileverContact, CalibratedOnItself)
 {
-    // Seed 000 measured eq. 2 on the same surfaces, so the calibration contact is the rig contact.
+    // [Smith2000] measured eq. 2 on the same surfaces, so the calibration contact is the rig contact.
     const ContactParameters c = cantileverContact();
     EXPECT_EQ(c.calibration.radius, c.rig.radius);
     EXPECT_EQ(c.calibration.referenceForce, c.rig.referenceForce);
@@ -37,7 +37,7 @@ TEST(CantileverContact, CalibratedOnItself)
 TEST(CantileverContact, PlasticLawStartsFromTheCurvesStaticCoefficient)
 {
     // Equal area per newton in calibration and rig: mu_s at ambient is eq. 2's 0.4 + 0.45 + 0.35 = 1.2
-    // (reference §2.1: 1.2 (A_rig/N)/(A_cal/N_cal)).
+    // ([Notes §2.1]: 1.2 (A_rig/N)/(A_cal/N_cal)).
     PlasticThermalLaw law(cantileverContact());
     law.prepare(kSampleRate);
     EXPECT_NEAR(law.staticCoefficient(CantileverLoad::normalForce), ClassicalCurve{}.mu(0.0), 1e-3);

@@ -1,5 +1,5 @@
-// The rig as a linear system behind the junction: seed 000 eq. 1 holds sample by sample, the contact sees the
-// load line of a free mass, bad parameters are named, and step() never allocates.
+// The rig as a linear system behind the junction: [Smith2000] eq. 1 holds sample by sample, the contact sees
+// the load line of a free mass, bad parameters are named, and step() never allocates.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -53,7 +53,7 @@ TEST(OscillatorRig, ForceSettlesWithinAFewSamplesOfACapture)
 
 TEST(OscillatorRig, EquationOfMotionHoldsEverySample)
 {
-    // m x'' + R x' + S x = f (seed 000 eq. 1), through sticking, slipping and the transitions.
+    // m x'' + R x' + S x = f ([Smith2000] eq. 1), through sticking, slipping and the transitions.
     const RigRun run = seedRun(FrictionModel::Classical, cantileverContact(), 0.2);
     const OscillatorRigParameters p;
     double worst = 0.0;

@@ -1,5 +1,6 @@
 #pragma once
-// What the rig tests share: seed 000's run (6.3 N, 0.042 m/s, from rest) with any law, and per-cycle views.
+// What the rig tests share: [Smith2000]'s run (6.3 N, 0.042 m/s, from rest) with any law, and per-cycle
+// views.
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,8 +32,9 @@ inline std::size_t sampleAt(const physics::RigRun& run, double seconds)
 }
 
 /// Signed area of the (sliding speed, friction coefficient) loop from `fromSeconds` on, shoelace formula:
-/// > 0 anticlockwise with dv = v - v_rod on the horizontal axis (the sense of seed 000 Fig. 2c: sticking at
-/// the right edge dv = 0, the coefficient falling as the slip speeds up, recovering lower on the way back).
+/// > 0 anticlockwise with dv = v - v_rod on the horizontal axis (the sense of [Smith2000] Fig. 2c: sticking
+/// at the right edge dv = 0, the coefficient falling as the slip speeds up, recovering lower on the way
+/// back).
 inline double loopSignedArea(const physics::RigRun& run, double fromSeconds)
 {
     double twice = 0.0;

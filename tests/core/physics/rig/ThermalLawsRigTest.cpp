@@ -1,11 +1,12 @@
-// Seed 000's thermal laws on the same rig, same modal mass and same contact: predictions, not fits.
+// [Smith2000]'s thermal laws on the same rig, same modal mass and same contact: predictions, not fits.
 //  * plastic (eq. 4): "stick-slip motion at about 44 Hz", "contact temperature fluctuates in the range
 //    20-40 K above ambient", hysteresis "in the correct sense" (anticlockwise, Fig. 2c);
-//  * viscous (eq. 3): "forward slipping" (the oscillator faster than the rod), with the seed's thermal values
+//  * viscous (eq. 3): "forward slipping" (the oscillator faster than the rod), with [Smith2000]'s thermal
+//  values
 //    and with a higher specific heat alike.
 // Tests named ...KnownDiscrepancy are seed results this model does not reproduce: each asserts the band that
-// was measured, so that a crash or a change in either direction is noticed, and its comment gives the seed's
-// figure.
+// was measured, so that a crash or a change in either direction is noticed, and its comment gives
+// [Smith2000]'s figure.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -41,9 +42,10 @@ double largestForwardSlip(const RigRun& run)
 
 // Seed: "stick-slip motion at about 44 Hz". Measured with the two-sided heat balance (handbook constants,
 // ThermalMaterial.h; perspex wedge, rosin coat on the rod): the first cycle from rest lasts 24.6 ms (40.7 Hz,
-// within 8 % of the seed), then the period shortens (22.8, 21.7, 21.0 ms ...) and settles at 54.9 Hz
+// within 8 % of [Smith2000]), then the period shortens (22.8, 21.7, 21.0 ms ...) and settles at 54.9 Hz
 // (0.5-1 s): the wedge keeps part of every slip's heat and each settled cycle slides the rod ~0.75 mm, a
-// little less than the contact width, so the floor stays above the seed's. (Old one-sided balance: 89.9 Hz.)
+// little less than the contact width, so the floor stays above [Smith2000]'s. (Old one-sided balance: 89.9
+// Hz.)
 TEST(PlasticRig, StickSlipFrequencyKnownDiscrepancy)
 {
     const RigRun run = seedRun(FrictionModel::Plastic);
@@ -53,7 +55,7 @@ TEST(PlasticRig, StickSlipFrequencyKnownDiscrepancy)
     EXPECT_LT(f, 61.0);
     const auto onsets = slipOnsetTimes(run, 0.0);
     ASSERT_GE(onsets.size(), 2u);
-    EXPECT_NEAR(1.0 / (onsets[1] - onsets[0]), 44.0, 0.15 * 44.0); // the first cycle does match the seed
+    EXPECT_NEAR(1.0 / (onsets[1] - onsets[0]), 44.0, 0.15 * 44.0); // the first cycle does match [Smith2000]
 }
 
 // Seed: "the contact temperature fluctuates in the range 20-40 K above ambient". Measured: 34.4-67.5 K

@@ -1,6 +1,6 @@
-// Seed 000 with the traditional friction curve (eq. 2, Rosin's "classical" law): the modal mass calibration
-// (stick-slip at 34 Hz, "at the rather lower frequency of approximately 34 Hz") and the "rise to a very sharp
-// peak [of acceleration] immediately before sticking is initiated".
+// [Smith2000] with the traditional friction curve (eq. 2, Rosin's "classical" law): the modal mass
+// calibration (stick-slip at 34 Hz, "at the rather lower frequency of approximately 34 Hz") and the "rise to
+// a very sharp peak [of acceleration] immediately before sticking is initiated".
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Disc-average half-space Green's function (reference eq. 2.5) and its SOE fit (eq. 2.8).
+// Disc-average half-space Green's function ([Notes] eq. 2.5) and its SOE fit (eq. 2.8).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -35,7 +35,7 @@ TEST(ConductionKernel, GreenFunctionIntegratesToDiscMeanResistance)
 
 TEST(ConductionKernel, GreenFunctionShortTimeLimitIsOneDimensional)
 {
-    // t << a^2/kappa: G -> 1 / (A e sqrt(pi t)) (reference §2.3.1).
+    // t << a^2/kappa: G -> 1 / (A e sqrt(pi t)) ([Notes §2.3.1]).
     const double a = 500e-6, K = kMaterial.conductivity, rc = kMaterial.volumetricHeatCapacity;
     const double t = 1e-6 * a * a / (K / rc);
     const double oneD = 1.0 / (pi * a * a * std::sqrt(K * rc) * std::sqrt(pi * t));
@@ -90,7 +90,7 @@ TEST(ConductionKernel, SumOfExponentialsMatchesGreenFunctionWithTheFewestTerms)
 
 TEST(ConductionKernel, FirstStepWeightMatchesOneDimensionalIntegral)
 {
-    // int_0^dt G ~ 2 sqrt(dt) / (A e sqrt(pi)) for dt << a^2/kappa (reference §2.5).
+    // int_0^dt G ~ 2 sqrt(dt) / (A e sqrt(pi)) for dt << a^2/kappa ([Notes §2.5]).
     const double a = 500e-6, K = kMaterial.conductivity, rc = kMaterial.volumetricHeatCapacity;
     for (double fs : {44100.0, 192000.0})
     {

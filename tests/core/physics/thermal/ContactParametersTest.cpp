@@ -1,4 +1,4 @@
-// Contact radius scaling and the seed 001 Table 2 contacts.
+// Contact radius scaling and the [Galluzzo2017] Table 2 contacts.
 #include <gtest/gtest.h>
 
 #include <cmath>

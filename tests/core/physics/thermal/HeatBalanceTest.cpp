@@ -1,5 +1,5 @@
-// Contact heat balance (reference eqs. 2.4-2.9, §2.3a): crossing temperatures of seed 002, the
-// Helmholtz-motion demonstration of reference §2.6b, force scaling, and stability of the implicit update.
+// Contact heat balance ([Notes] eq. 2.4-2.9, §2.3a): crossing temperatures of [Woodhouse-thermal], the
+// Helmholtz-motion demonstration of [Notes §2.6b], force scaling, and stability of the implicit update.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,10 +20,10 @@ constexpr double pi = std::numbers::pi;
 double muSteady(double v)
 {
     return 0.2 * std::pow(v + 0.011, -0.4);
-} // seed 002 eq. 11
+} // [Woodhouse-thermal] eq. 11
 
-/// Crossing speed v* of seed 002 eq. 11 with h = c (v + x0)^-0.4, solved here by bisection on the two
-/// formulas.
+/// Crossing speed v* of [Woodhouse-thermal] eq. 11 with h = c (v + x0)^-0.4, solved here by bisection on the
+/// two formulas.
 double crossingSpeed(double c, double x0)
 {
     auto diff = [&](double v) { return c * std::pow(v + x0, -0.4) - muSteady(v); };
@@ -41,14 +41,15 @@ struct Crossing
     const char* name;
     double c, x0, publishedT0;
 };
-const Crossing kCrossings[] = {{"bow", 0.5, 0.27, 26.2}, {"rod", 0.37, 0.35, 36.8}}; // seed 002 eqs. 12-13
+const Crossing kCrossings[] = {{"bow", 0.5, 0.27, 26.2},
+                               {"rod", 0.37, 0.35, 36.8}}; // [Woodhouse-thermal] eqs. 12-13
 
 // A prediction, not a fit: the rosin and acrylic constants are handbook values (ThermalMaterial.h). Measured
 // (48 kHz-independent, 5000 s of sliding at 1 kHz): T0 = 14.8 K (bow) and 20.4 K (rod) against the published
 // 26.2 K and 36.8 K, i.e. 0.57x and 0.55x; their ratio 1.374 against the published 1.405 (-2 %). The ratio
 // depends on how the conductance grows with speed (advection against conduction), the level on the solids'
-// effusivities, which seed 001 took from a table the project could not obtain (reference §10 Q2).
-TEST(HeatBalance, CrossingTemperaturesOfSeed002AsPredictions)
+// effusivities, which [Galluzzo2017] took from a table the project could not obtain ([Notes §10] Q2).
+TEST(HeatBalance, CrossingTemperaturesOfTheModifiedLawAsPredictions)
 {
     const ContactParameters contact = galluzzoContact();
     const ContactGeometry& cal = contact.calibration; // 500 um at 3 N, 10 um layer
@@ -89,13 +90,13 @@ TEST(HeatBalance, CrossingTemperaturesOfSeed002AsPredictions)
         EXPECT_GT(predicted[i] / kCrossings[i].publishedT0, 0.45) << kCrossings[i].name;
         EXPECT_LT(predicted[i] / kCrossings[i].publishedT0, 0.67) << kCrossings[i].name;
     }
-    EXPECT_NEAR(crossingSpeed(0.5, 0.27), 0.01816, 1e-5); // reference §3.2
+    EXPECT_NEAR(crossingSpeed(0.5, 0.27), 0.01816, 1e-5); // [Notes §3.2]
     EXPECT_NEAR(crossingSpeed(0.37, 0.35), 0.08175, 1e-5);
 }
 
 TEST(HeatBalance, HelmholtzMotionTemperaturesAgreeAcrossSampleRates)
 {
-    // Reference §2.6b / helm_demo.py: prescribed Helmholtz sliding on the cello D string, F = 1 N,
+    // [Notes §2.6b] / helm_demo.py: prescribed Helmholtz sliding on the cello D string, F = 1 N,
     // v_b = 0.1 m/s, beta = 0.1 (slip at v_b/beta = 1 m/s for a fraction beta of each period), mu = 0.45.
     const ContactParameters contact = galluzzoContact();
     const double F = 1.0, vb = 0.1, beta = 0.1, mu = 0.45, f0 = 146.8;
@@ -134,7 +135,7 @@ TEST(HeatBalance, HelmholtzMotionTemperaturesAgreeAcrossSampleRates)
     }
     EXPECT_NEAR(means[0], means[1], 1.0);
     // A prediction against a secondary source: Euphonics' account of the original model, a mean rise of ~50 K
-    // with ~30 K swing per cycle (reference §2.6b). Measured with both solids conducting: mean 18.6-18.9 K,
+    // with ~30 K swing per cycle ([Notes §2.6b]). Measured with both solids conducting: mean 18.6-18.9 K,
     // swing 36 K. The swing agrees; the mean is ~2.7x lower, since the moving side now also takes heat while
     // stuck and its patch is refreshed by every flyback (the old one-sided balance gave 56-65 K). The band
     // asserted is the measured one with room for the uncertain constants; it still catches gross errors (a
@@ -152,7 +153,7 @@ TEST(HeatBalance, ShortTimeResponseIsOneDimensionalConductionIntoBothSolids)
 {
     // Constant power P into a stuck contact, thin layer, wide disc: for delta^2/kappa << t << a^2/kappa both
     // solids are 1-D half-spaces in parallel, so the surface follows T = 2 (P/A) sqrt(t / pi) / (e_s + e_m)
-    // (seed 000: conduction into the two neighbouring solids; reference §2.3a: the moving side conducts
+    // ([Smith2000]: conduction into the two neighbouring solids; [Notes §2.3a]: the moving side conducts
     // while stuck). Rosin on glass, so that the two effusivities differ by 3x.
     ContactMaterials m;
     m.stationary = materials::rosin;
@@ -175,7 +176,7 @@ TEST(HeatBalance, ShortTimeResponseIsOneDimensionalConductionIntoBothSolids)
 TEST(HeatBalance, ContactAreaRescalingAtRest)
 {
     // With Coulomb scaling C and the stationary kernel scale with A, so a stuck contact heated by the same
-    // power reaches a temperature inversely proportional to the area (reference §2.5, last paragraph).
+    // power reaches a temperature inversely proportional to the area ([Notes §2.5], last paragraph).
     const ContactParameters contact = galluzzoContact();
     HeatBalance h1, h2;
     h1.prepare(contact, 48000.0);

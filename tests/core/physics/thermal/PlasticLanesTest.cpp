@@ -60,7 +60,7 @@ TEST(PlasticLanes, EachLaneIsThePlasticLaw)
     EXPECT_GT(sticking, 1000);
     EXPECT_GT(sliding, 1000);
     EXPECT_GT(hottest, 1.0);
-    // Measured (vector kernels, lanes lifted a third of the time, 28 Nov 2026): 8.9e-16 N per N (1e-15 on
+    // Measured (vector kernels, lanes lifted a third of the time): 8.9e-16 N per N (1e-15 on
     // the baseline path) and 4.3e-14 K at up to 74 K.
     EXPECT_LT(worstForce, 1e-9);
     EXPECT_LT(worstTemperature, 1e-9);

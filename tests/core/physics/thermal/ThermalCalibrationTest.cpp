@@ -1,5 +1,5 @@
-// Steady-sliding calibration (reference §2.4, §3.2) and steady sliding through the thermal laws, which must
-// reproduce the measured curves they were calibrated on (seed 001 eq. 1, seed 002 eq. 11).
+// Steady-sliding calibration ([Notes §2.4], §3.2) and steady sliding through the thermal laws, which must
+// reproduce the measured curves they were calibrated on ([Galluzzo2017] eq. 1, [Woodhouse-thermal] eq. 11).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,21 +20,21 @@ constexpr double pi = std::numbers::pi;
 double muClassical(double v)
 {
     return 0.4 * std::exp(-v / 0.01) + 0.45 * std::exp(-v / 0.1) + 0.35;
-} // seed 001 eq. 1
+} // [Galluzzo2017] eq. 1
 double muSteady(double v)
 {
     return 0.2 * std::pow(v + 0.011, -0.4);
-} // seed 002 eq. 11
+} // [Woodhouse-thermal] eq. 11
 double hBow(double v)
 {
     return 0.5 * std::pow(v + 0.27, -0.4);
-} // seed 002 eq. 12
+} // [Woodhouse-thermal] eq. 12
 double hRod(double v)
 {
     return 0.37 * std::pow(v + 0.35, -0.4);
-} // seed 002 eq. 13
+} // [Woodhouse-thermal] eq. 13
 
-/// Steady temperature on the calibration rig from the continuous model (reference eq. 2.7 with §2.3a's moving
+/// Steady temperature on the calibration rig from the continuous model ([Notes] eq. 2.7 with §2.3a's moving
 /// side, by quadrature of the Green's function), a second method beside the discrete scheme the table uses.
 double steadyT(const ContactParameters& p, double mu, double v)
 {
@@ -73,7 +73,7 @@ TEST(ThermalCalibration, YieldStressTableInvertsAnalyticSteadyMap)
     t.build(p, 44100.0, CalibrationQuantity::YieldStress);
     EXPECT_FALSE(t.truncated()); // T_ss(v) increases over 1e-7..10 m/s for the classical curve (§2.4)
     const double Acal = pi * 500e-6 * 500e-6, Fcal = 3.0;
-    EXPECT_NEAR(t.lookup(0.0) * Acal / Fcal, 1.2, 1e-12);              // mu_s of seed 001 eq. 1
+    EXPECT_NEAR(t.lookup(0.0) * Acal / Fcal, 1.2, 1e-12);              // mu_s of [Galluzzo2017] eq. 1
     EXPECT_NEAR(t.lookup(1e4) * Acal / Fcal, muClassical(10.0), 1e-9); // held above the table's top
     for (double v : {1e-4, 1e-3, 1e-2, 3e-2, 0.1, 0.3, 1.0, 3.0})
     {
@@ -86,9 +86,9 @@ TEST(ThermalCalibration, YieldStressTableInvertsAnalyticSteadyMap)
 
 TEST(ThermalCalibration, ModifiedTablesCrossUnityAtTheModelsOwnT0)
 {
-    // Seed 002 eq. 8: K Y(T0) = 1 where h and mu_steady cross (v* = 0.01816 m/s bow, 0.08175 m/s rod), at
-    // the model's own steady temperature there. (Its values against the published 26.2 K and 36.8 K are
-    // predictions: HeatBalance.CrossingTemperaturesOfSeed002AsPredictions.)
+    // [Woodhouse-thermal] eq. 8: K Y(T0) = 1 where h and mu_steady cross (v* = 0.01816 m/s bow, 0.08175 m/s
+    // rod), at the model's own steady temperature there. (Its values against the published 26.2 K and 36.8 K
+    // are predictions: HeatBalance.CrossingTemperaturesOfTheModifiedLawAsPredictions.)
     const ContactParameters p = galluzzoContact();
     ThermalCalibration bow, rod;
     bow.build(p, 44100.0, CalibrationQuantity::ModifiedBow);
@@ -102,10 +102,11 @@ TEST(ThermalCalibration, ModifiedTablesCrossUnityAtTheModelsOwnT0)
     EXPECT_NEAR(rod.lookup(T0rod), 1.0, 0.01);
     EXPECT_NEAR(bow.lookup(0.0), muSteady(0.0) / hBow(0.0), 1e-12);
     EXPECT_NEAR(rod.lookup(0.0), muSteady(0.0) / hRod(0.0), 1e-12);
-    // Known discrepancy with seed 002 ("T approximately proportional to mu_steady sqrt(|v|)", rising): on the
-    // 10 um calibration layer the advected rosin (~ v) outgrows the conduction (~ sqrt v) and the steady map
-    // peaks (measured: 22.7 K at 0.48 m/s), so the table is cut there. Without advection it would rise, but
-    // the crossing temperatures' ratio would then move from 1.37 to 1.47 (published 1.40). Band asserted.
+    // Known discrepancy with [Woodhouse-thermal] ("T approximately proportional to mu_steady sqrt(|v|)",
+    // rising): on the 10 um calibration layer the advected rosin (~ v) outgrows the conduction (~ sqrt v) and
+    // the steady map peaks (measured: 22.7 K at 0.48 m/s), so the table is cut there. Without advection it
+    // would rise, but the crossing temperatures' ratio would then move from 1.37 to 1.47 (published 1.40).
+    // Band asserted.
     EXPECT_TRUE(bow.truncated());
     EXPECT_GT(bow.maxTemperature(), 18.0);
     EXPECT_LT(bow.maxTemperature(), 28.0);
@@ -130,8 +131,8 @@ TEST(ThermalCalibration, SteadySlidingThroughPlasticLawReproducesClassicalCurve)
         const double err = mu / muClassical(std::abs(dv)) - 1.0;
         worst = std::max(worst, std::abs(err));
         std::printf(
-            "[ plastic  ] v = %6.3f m/s: mu = %.4f, seed 001 eq. 1 %.4f, error %+.3f %%, T = %.2f K\n", v, mu,
-            muClassical(std::abs(dv)), 100.0 * err, law.contactTemperature());
+            "[ plastic  ] v = %6.3f m/s: mu = %.4f, [Galluzzo2017] eq. 1 %.4f, error %+.3f %%, T = %.2f K\n",
+            v, mu, muClassical(std::abs(dv)), 100.0 * err, law.contactTemperature());
         EXPECT_NEAR(err, 0.0, 0.02) << "v = " << v;
     }
     std::printf("[ plastic  ] worst steady-sliding error %.3f %%\n", 100.0 * worst);
@@ -150,7 +151,7 @@ TEST(ThermalCalibration, SteadySlidingThroughViscousLawReproducesClassicalCurve)
         EXPECT_NEAR(mu / muClassical(std::abs(dv)), 1.0, 0.02) << "v = " << v;
         worst = std::max(worst, std::abs(mu / muClassical(std::abs(dv)) - 1.0));
     }
-    std::printf("[ viscous  ] worst steady-sliding error vs seed 001 eq. 1: %.3f %%\n", 100.0 * worst);
+    std::printf("[ viscous  ] worst steady-sliding error vs [Galluzzo2017] eq. 1: %.3f %%\n", 100.0 * worst);
 }
 
 TEST(ThermalCalibration, SteadySlidingThroughModifiedLawReproducesSteadyFit)
@@ -173,8 +174,8 @@ TEST(ThermalCalibration, SteadySlidingThroughModifiedLawReproducesSteadyFit)
             worst = std::max(worst, std::abs(err));
             EXPECT_NEAR(err, 0.0, 0.02) << law.name() << " v = " << v;
         }
-        std::printf("[ modified ] %s: worst steady-sliding error vs seed 002 eq. 11: %.3f %%\n", law.name(),
-                    100.0 * worst);
+        std::printf("[ modified ] %s: worst steady-sliding error vs [Woodhouse-thermal] eq. 11: %.3f %%\n",
+                    law.name(), 100.0 * worst);
     }
 }
 

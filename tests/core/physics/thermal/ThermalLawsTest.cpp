@@ -48,7 +48,7 @@ void expectStaticLimit(FrictionLaw& law, double muS, double Fb)
 
 TEST(PlasticThermalLaw, StaticCoefficientAtAmbientFollowsAreaPerNewton)
 {
-    // Seed 001 Fig. 14 / reference §2.1: mu_s = 1.2 (A_rig/N_rig) / (A_cal/N_cal): 0.90 (Galluzzo), 0.576
+    // [Galluzzo2017] Fig. 14 / [Notes §2.1]: mu_s = 1.2 (A_rig/N_rig) / (A_cal/N_cal): 0.90 (Galluzzo), 0.576
     // (Schumacher).
     for (const ContactParameters& p : {galluzzoContact(), schumacherContact()})
     {
@@ -85,7 +85,7 @@ TEST(PlasticThermalLaw, SlidesAtTheTemperatureLimitedForce)
     {
         const JunctionSolution s = law.solve({dvh, twoZ, Fb});
         ASSERT_FALSE(s.sticking);
-        // Exact characteristic solve: f = -limit, dv = dvh - limit / 2Z (reference eq. 2.3).
+        // Exact characteristic solve: f = -limit, dv = dvh - limit / 2Z ([Notes] eq. 2.3).
         EXPECT_NEAR(s.dv, dvh + s.frictionForce / twoZ, 1e-12);
     }
     EXPECT_GT(law.contactTemperature(), 10.0);
@@ -94,7 +94,7 @@ TEST(PlasticThermalLaw, SlidesAtTheTemperatureLimitedForce)
 
 TEST(ModifiedThermalLaw, StaticCoefficientAtAmbientIsSteadyFitAtZeroSpeed)
 {
-    // K Y(0) h(0) = mu_steady(0) = 0.2 * 0.011^-0.4 for either jump curve (seed 002 eqs. 9, 11).
+    // K Y(0) h(0) = mu_steady(0) = 0.2 * 0.011^-0.4 for either jump curve ([Woodhouse-thermal] eqs. 9, 11).
     const double muS = 0.2 * std::pow(0.011, -0.4);
     for (auto variant : {ModifiedThermalLaw::Variant::Bow, ModifiedThermalLaw::Variant::Rod})
     {
@@ -116,7 +116,7 @@ TEST(ViscousThermalLaw, LinearSolveWithoutStickingBarrier)
     ViscousThermalLaw law(p);
     law.prepare(48000.0);
     EXPECT_EQ(law.staticCoefficient(1.0), 0.0);
-    // At ambient the viscosity is the calibration's value at the creep floor v_min (seed 000 eq. 3):
+    // At ambient the viscosity is the calibration's value at the creep floor v_min ([Smith2000] eq. 3):
     // eta = F_cal mu(v_min) delta_cal / (A_cal v_min); c = A_rig eta / delta_rig.
     const double vmin = ThermalCalibration::kMinSpeed, Fb = 1.0, twoZ = 0.84;
     const double Acal = pi * 500e-6 * 500e-6, Arig = pi * 250e-6 * 250e-6;
@@ -131,7 +131,7 @@ TEST(ViscousThermalLaw, LinearSolveWithoutStickingBarrier)
         EXPECT_NEAR(s.frictionForce, twoZ * (s.dv - dvh), 1e-12 * std::abs(twoZ * dvh));
     }
     // Cold, the calibrated rosin is so viscous (c ~ 9e7 kg/s) that the string only creeps. Pre-warm the rosin
-    // to the analytic steady temperature of a 0.1 m/s slide on the calibration rig (reference eq. 2.7):
+    // to the analytic steady temperature of a 0.1 m/s slide on the calibration rig ([Notes] eq. 2.7):
     // then eta = F_cal mu(0.1) delta_cal / (A_cal 0.1) and the same linear solve applies, with no barrier.
     const double v = 0.1;
     const double Gss = HeatBalance::steadyConductance(p.calibration, p.materials, 3.0, v);

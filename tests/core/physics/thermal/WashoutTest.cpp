@@ -1,4 +1,4 @@
-// The moving side's washout (Washout.h, reference §2.3a): the polynomial forms against their closed forms,
+// The moving side's washout (Washout.h, [Notes §2.3a]): the polynomial forms against their closed forms,
 // and the heat balance's fast-sliding limit against the exact high-Peclet disc computed here by a second
 // method (quadrature over the chords of the disc, no Beta function).
 #include <gtest/gtest.h>
@@ -57,7 +57,7 @@ TEST(Washout, FastSlidingLimitIsTheExactHighPecletDisc)
         const double model = HeatBalance::steadyConductance(g, m, 1.0, v);
         const double exact = chordHeat(g.radius, m.moving.effusivity(), 1.0, v);
         EXPECT_NEAR(model / exact, 1.0, 0.03) << "v = " << v;
-        // Reference §2.3's quasi-steady pi a^2 e sqrt(3 v / (8 a)) lies 31 % below it.
+        // [Notes §2.3]'s quasi-steady pi a^2 e sqrt(3 v / (8 a)) lies 31 % below it.
         const double quasiSteady =
             pi * g.radius * g.radius * m.moving.effusivity() * std::sqrt(3.0 * v / (8.0 * g.radius));
         EXPECT_NEAR(quasiSteady / exact, 0.69, 0.01);

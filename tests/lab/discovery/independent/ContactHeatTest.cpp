@@ -1,10 +1,10 @@
 // The finite-difference heat balance against analytic solutions (not against Rosin's heat model):
 //  - a heated, stuck contact tends to the mean temperature of a uniformly heated disc on each solid,
-//    T = P / ((3 pi^2 / 8) a (K_s + K_m)) (reference eq. 2.7's stationary term: the integral of the disc
+//    T = P / ((3 pi^2 / 8) a (K_s + K_m)) ([Notes] eq. 2.7's stationary term: the integral of the disc
 //    Green's function, 8 / (3 pi^2 K a));
 //  - in steady sliding the discrete steady state equals the continuous model's: advection rho c a delta v,
 //    the disc conduction of both solids, and the moving side's washout profile pi a^2 e sqrt(v/a);
-//  - the yield-stress calibration gives the static coefficient 1.2 (a_rig / a_cal)^2 (reference §2.1).
+//  - the yield-stress calibration gives the static coefficient 1.2 (a_rig / a_cal)^2 ([Notes §2.1]).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -77,7 +77,7 @@ TEST(ContactHeat, CalibrationGivesTheSeedsStaticCoefficientOnTheGalluzzoRig)
         const double mu = std::numbers::pi * a * a * table.at(0.0) / force;
         const double aCal = 500e-6 * std::sqrt(force / 3.0);
         EXPECT_NEAR(mu, 1.2 * (a / aCal) * (a / aCal), 1e-9);
-        EXPECT_NEAR(mu, 0.90, 0.005); // reference §2.1: 1.2 x (0.433 / 0.5)^2
+        EXPECT_NEAR(mu, 0.90, 0.005); // [Notes §2.1]: 1.2 x (0.433 / 0.5)^2
     }
     // The table is a monotone map of temperature up to the fast end of the classical curve.
     EXPECT_GT(table.temperatures().back(), 50.0);

@@ -140,7 +140,7 @@ TEST(OwnEffects, BendingLossFactorOnlyDampsHighPartials)
                                          s.etaB(), s.etaA(), 0.0, 4.0);
     const double f0 = s.fundamental();
     EXPECT_NEAR(raised(f0) / nominal(f0), 1.0, 0.01);
-    // At the 40th partial the bending term is most of the loss (reference §4.1: Q 810 there).
+    // At the 40th partial the bending term is most of the loss ([Notes §4.1]: Q 810 there).
     EXPECT_GT(raised(40.0 * f0) / nominal(40.0 * f0), 2.5);
 }
 

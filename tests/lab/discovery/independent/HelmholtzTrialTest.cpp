@@ -1,9 +1,9 @@
-// A full trial of the independent generator against the ideal Helmholtz motion (reference §6.1, seed 001):
-// bowed at beta = 0.1 with 0.5 N at a steady 0.1 m/s (inside Schelleng's limits for the cello D string), the
-// string settles into one slip per period, slipping for a fraction ~beta of the period 2L/c. And the first
-// slip of a Guettler start comes at the static coefficient 0.90 of the Galluzzo rig (reference §2.1), after
-// the parabolic pre-slip rise of seed 002 eqs. 3-5, f = P y / (L beta (1 - beta)), y = a t^2 / 2 (with the
-// torsional stiffness in series).
+// A full trial of the independent generator against the ideal Helmholtz motion ([Notes §6.1],
+// [Galluzzo2017]): bowed at beta = 0.1 with 0.5 N at a steady 0.1 m/s (inside Schelleng's limits for the
+// cello D string), the string settles into one slip per period, slipping for a fraction ~beta of the period
+// 2L/c. And the first slip of a Guettler start comes at the static coefficient 0.90 of the Galluzzo rig
+// ([Notes §2.1]), after the parabolic pre-slip rise of [Woodhouse-thermal] eqs. 3-5, f = P y / (L beta (1 -
+// beta)), y = a t^2 / 2 (with the torsional stiffness in series).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,7 +23,7 @@ struct SlipCount
     double periods = 0.0, slipFraction = 0.0, meanPeriod = 0.0, worst = 0.0;
 };
 
-// Slip episodes (reference §7.2) after 0.35 s; runs shorter than 0.1 ms (1.5 % of a period) are sticking
+// Slip episodes ([Notes §7.2]) after 0.35 s; runs shorter than 0.1 ms (1.5 % of a period) are sticking
 // ripple, not the Helmholtz slip, and are counted apart.
 SlipCount countSlips(const TrialTrace& t, double period)
 {

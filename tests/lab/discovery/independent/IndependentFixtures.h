@@ -1,6 +1,7 @@
 #pragma once
-// Shared set-up of the independent generator's tests: the nominal Galluzzo rig (cello D3, seed 001 Tables 1
-// and 2) without nuisance, and small measurements on traces (slip onsets, the fundamental's amplitude).
+// Shared set-up of the independent generator's tests: the nominal Galluzzo rig (cello D3, [Galluzzo2017]
+// Tables 1 and 2) without nuisance, and small measurements on traces (slip onsets, the fundamental's
+// amplitude).
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -87,7 +88,7 @@ inline double peakFrequency(const std::vector<double>& x, std::size_t begin, std
     return 0.5 * (a + b);
 }
 
-/// Loss factor of reference eq. (4.1) at a harmonic frequency (the test's own evaluation).
+/// Loss factor of [Notes] eq. (4.1) at a harmonic frequency (the test's own evaluation).
 inline double referenceLoss(const physics::StringParameters& s, double f)
 {
     const double w = 2.0 * std::numbers::pi * f;

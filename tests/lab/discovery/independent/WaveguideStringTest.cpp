@@ -1,6 +1,6 @@
 // The waveguide string against the string's own physics, not against Rosin: a free string rings at
-// c / (2L) (rigid ends, stiffness off: reference §4.2 with B = 0) and its fundamental decays at
-// sigma = pi eta(f0) f0 with eta from the loss law, reference eq. (4.1).
+// c / (2L) (rigid ends, stiffness off: [Notes §4.2] with B = 0) and its fundamental decays at
+// sigma = pi eta(f0) f0 with eta from the loss law, [Notes] eq. (4.1).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -89,7 +89,7 @@ TEST(WaveguideString, ConstantExtraLossAddsItsDecayRate)
 
 TEST(WaveguideString, StiffStringPartialsAreSharpByTheInharmonicity)
 {
-    // Reference eq. (4.2): f_n = n f0 sqrt(1 + B n^2), B = pi^2 EI / (P L^2) = 5.6e-5 for the cello D. Up
+    // [Notes] eq. (4.2): f_n = n f0 sqrt(1 + B n^2), B = pi^2 EI / (P L^2) = 5.6e-5 for the cello D. Up
     // through harmonic 60 (9.7 kHz, 50 cents sharp of harmonic): the band of analysis::HarmonicTilt, where
     // the corner's rounding by dispersion shows.
     const Ringing r = ring(0.0, 1.2, true);
