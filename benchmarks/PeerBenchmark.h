@@ -2,8 +2,8 @@
 // What the benchmarks share: STK's Bowed instrument as the peer, run in the same process (machines are noisy,
 // so speed is reported as a ratio to it), a reporter that keeps each benchmark's time per iteration, and the
 // summary every benchmark prints: time per sample and per 128-sample block, share of one core at 48 kHz and
-// the ratio to STK; with --markdown=FILE also as the Markdown table the README shows
-// (benchmarks/update_readme_benchmarks.py puts it there, so the README's figures are printed, not typed).
+// the ratio to STK; with --markdown=FILE also as the Markdown table the manual's benchmarks page shows
+// (benchmarks/update_benchmark_tables.py puts it there, so its figures are printed, not typed).
 #include <benchmark/benchmark.h>
 
 #include <cstdio>

@@ -1,4 +1,4 @@
-// Issue 3's CPU figure through the plugin itself: RosinProcessor::processBlock at 48 kHz in 128-sample
+// The plugin's CPU figure through the plugin itself: RosinProcessor::processBlock at 48 kHz in 128-sample
 // blocks, the cello with body and plastic thermal friction, with everything the audio thread does (gesture,
 // ears, regime readouts, output stage). Two loads: all four strings bowed (a held four-note chord, sustain
 // pedal down; the worst case) and a solo line (one string bowed, three ringing with their bows lifted).

@@ -40,7 +40,7 @@ void benchVoice(benchmark::State& state, rosin::physics::FrictionModel model)
     state.counters["body"] = voice.bodyModeCount();
 }
 
-/// The whole cello, four strings bowed at once on one body (issue 3's CPU figure), per sample of output.
+/// The whole cello, four strings bowed at once on one body (the plugin's CPU figure), per sample of output.
 void benchCello(benchmark::State& state)
 {
     using namespace rosin::physics;

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A whole-process render against STK's (issue 22): the wall time of `rosin render` bowing the cello D
+"""A whole-process render against STK's: the wall time of `rosin render` bowing the cello D
 string for SECONDS (one voice with the cello body, plastic law, the radiated sound written as a 32-bit float
 WAV) against `stk-render` (benchmarks/StkRender.cpp: STK's Bowed at the same pitch, written by STK's
 FileWvOut), each run RUNS times, the two interleaved so that the machine's drift hits both; prints the best

@@ -1,13 +1,13 @@
 #!/usr/bin/env python3
-"""Puts the benchmarks' own summary tables into README.md (issue 22 item 5: the figures are printed by the
-benchmarks, not typed). Runs build/benchmarks/bench_voice and bench_plugin with --markdown=FILE and replaces
-what lies between the README's two markers with their tables, the date and the machine.
+"""Puts the benchmarks' own summary tables into Resources/docs/benchmarks.md: the figures are printed by the
+benchmarks, not typed. Runs build/benchmarks/bench_voice and bench_plugin with --markdown=FILE and replaces
+what lies between the page's two markers with their tables and the machine (no date: the page says what the
+code does, git says when).
 
-    python3 benchmarks/update_readme_benchmarks.py BUILD_DIR [README.md]   (or: cmake --build build
+    python3 benchmarks/update_benchmark_tables.py BUILD_DIR [PAGE]   (or: cmake --build build
         --target readme-benchmarks)
-    python3 benchmarks/update_readme_benchmarks.py --check README.md       (the markers and a table are there)
+    python3 benchmarks/update_benchmark_tables.py --check PAGE       (the markers and a table are there)
 """
-import datetime
 import os
 import pathlib
 import platform
@@ -15,7 +15,7 @@ import subprocess
 import sys
 import tempfile
 
-BEGIN = "<!-- benchmark-tables:begin (benchmarks/update_readme_benchmarks.py writes this part) -->"
+BEGIN = "<!-- benchmark-tables:begin (benchmarks/update_benchmark_tables.py writes this part) -->"
 END = "<!-- benchmark-tables:end -->"
 BENCHMARKS = [
     ("bench_voice", "One voice (cello D3 with the cello body) per friction law, and the four-string cello "
@@ -53,8 +53,7 @@ def run(build_dir):
 
 
 def section(tables):
-    stamp = datetime.date.today().isoformat()
-    head = (f"Printed by the benchmarks on {stamp} ({machine()}); `cmake --build build --target "
+    head = (f"Printed by the benchmarks on an {machine()}; `cmake --build build --target "
             "readme-benchmarks` runs them again and rewrites this part.\n")
     return "\n".join([BEGIN, head] + tables + [END])
 
@@ -62,7 +61,7 @@ def section(tables):
 def replace(text, new_section):
     start, stop = text.find(BEGIN), text.find(END)
     if start < 0 or stop < start:
-        raise ValueError(f"README has no '{BEGIN}' ... '{END}' section")
+        raise ValueError(f"the page has no '{BEGIN}' ... '{END}' section")
     return text[:start] + new_section + text[stop + len(END):]
 
 
@@ -82,11 +81,11 @@ def check(readme):
 
 def main(argv):
     if len(argv) >= 2 and argv[1] == "--check":
-        check(argv[2] if len(argv) > 2 else "README.md")
+        check(argv[2] if len(argv) > 2 else "Resources/docs/benchmarks.md")
         return
     if len(argv) < 2:
         sys.exit(__doc__)
-    readme = pathlib.Path(argv[2] if len(argv) > 2 else "README.md")
+    readme = pathlib.Path(argv[2] if len(argv) > 2 else "Resources/docs/benchmarks.md")
     readme.write_text(replace(readme.read_text(), section(run(argv[1]))))
     print(f"{readme}: benchmark section rewritten")
 
