@@ -2,7 +2,7 @@
 // How bright a periodic bridge force is: the level of its upper harmonics relative to its lowest ones, in
 // dB. In Helmholtz motion the bridge force is a sawtooth whose drop is the Helmholtz corner arriving at the
 // bridge; the string's losses round that corner every period and the friction at the bow sharpens it again
-// (Cremer's corner rounding, [Notes §7]), so the balance sets how fast the harmonics fall.
+// (Cremer's corner rounding [Cremer1984], [Notes §7]), so the balance sets how fast the harmonics fall.
 // An ideal sawtooth has harmonic n at 1/n: harmonics 25-60 then carry -17.7 dB of the power of harmonics
 // 1-4 (sum of 1/n^2; HarmonicTiltTest). The string's own losses rise with frequency (bending term) while
 // the body's dominate the low modes, so a string losing more than its nominal loss law shows here: tripled

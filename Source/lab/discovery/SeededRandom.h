@@ -24,7 +24,7 @@ enum class RandomStream : std::uint64_t
     Noise = 5,        ///< index: the trial
 };
 
-/// SplitMix64's finaliser: a bijective mix of 64 bits (Steele, Lea and Flood 2014).
+/// SplitMix64's finaliser: a bijective mix of 64 bits ([SLF2014]).
 std::uint64_t mix64(std::uint64_t x) noexcept;
 
 class SeededRandom

@@ -157,7 +157,7 @@ BodyParameters assemble(const char* name, const std::vector<BodyMode>& lowModes,
 // string): ~5 dB higher for the cello, as reported in [Notes §5.2] [V2: EUPH 9.4].
 // Radiation (fourth and fifth numbers: sigma and the sign of the net volume velocity; BodyRadiation.h): the
 // cello's signature modes are the violin's scaled ~2.1x in size, so each has the violin homologue's ka and
-// its radiation efficiency [A]: B1- 0.12 and B1+ 0.11 (Bissinger 2008), C1 and CBR, which move little net
+// its radiation efficiency [A]: B1- 0.12 and B1+ 0.11 ([Bissinger2008]), C1 and CBR, which move little net
 // volume, at Bissinger's low end (0.004 and 0.01). A0 radiates through the f-holes, not through corpus
 // motion; its sigma is set so that half its losses are radiation [A] (0.5 rho_s omega / (rho0 c0 Q)).
 const std::vector<BodyMode> celloLowModes = {
@@ -203,7 +203,7 @@ const std::vector<BodyMode> violinLowModes = {
 constexpr StatisticalRecipe violinRecipe{750.0, 0.023, 0.035, 2600.0, 1.5, 0.025, 0.3, 1500.0};
 
 // Violin radiation [A]: top 2.8 mm spruce 1.2 kg/m^2, back 3 mm maple 1.9 kg/m^2, mean rho_s 1.55 kg/m^2;
-// sigma reaches 1 at 4.2 kHz and directivity 2 at 4 kHz (Bissinger 2008, BodyRadiation.h); listener at 1 m.
+// sigma reaches 1 at 4.2 kHz and directivity 2 at 4 kHz ([Bissinger2008], BodyRadiation.h); listener at 1 m.
 constexpr BodyRadiation violinRadiation{1.55, 1.0, 4200.0, 4000.0};
 
 } // namespace

@@ -2,7 +2,7 @@
 // From the body's modes to the sound pressure a listener hears (Resources/docs/physics.md; [Notes, sound]).
 //
 // Each body mode radiates in proportion to its own motion: the admittance and the radiation share the
-// body's poles and differ only in their residues (Maestre, Scavone & Smith, "Joint modeling of impedance and
+// body's poles and differ only in their residues ([MSS2017], "Joint modeling of impedance and
 // radiation as a recursive parallel filter structure"). The residue of mode k follows from its radiated
 // power, W_k = rho0 c0 sigma_k S <v^2>, where S <v^2> = m_k v_b^2 / rho_s (the mode's kinetic energy spread
 // over plates of surface density rho_s; m_k is its effective mass at the bridge, v_b its bridge velocity),
@@ -25,7 +25,7 @@ inline constexpr double kAirDensity = 1.204;   ///< rho0, kg/m^3
 inline constexpr double kSpeedOfSound = 343.2; ///< c0, m/s
 
 /// Radiation efficiency of a statistical (or band) mode at frequency f: sigma = min(1, f / unityHz). Fitted
-/// through Bissinger's violin measurements ("Radiation damping, efficiency, and directivity for violin normal
+/// through Bissinger's violin measurements [Bissinger2008] ("Radiation damping, efficiency, and directivity for violin normal
 /// modes below 4 kHz", JASA 2008: first corpus bending modes 0.12 +- 0.03 and 0.11 +- 0.04 near 500 Hz,
 /// rising to ~1 by 4 kHz): unity at 4.2 kHz for the violin. The cello, a violin scaled ~2.1x in length, has
 /// the same ka at 1/2.1 the frequency [A]: unity at 2.0 kHz.

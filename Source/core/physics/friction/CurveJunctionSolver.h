@@ -1,6 +1,6 @@
 #pragma once
 // Exact intersection of the load line with a convex, decreasing friction curve, with the hysteresis rule
-// that resolves Friedlander's ambiguity ([Notes §1.3.1-1.3.2]; McIntyre, Schumacher & Woodhouse).
+// that resolves Friedlander's ambiguity ([Notes §1.3.1-1.3.2]; [MSW1983]).
 //
 // For dvHistory > 0 a sliding solution x = |dv| in (0, dvHistory) solves
 //     phi(x) = 2Z (x - dvHistory) + Fb mu(x) = 0.

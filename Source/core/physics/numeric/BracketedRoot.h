@@ -5,7 +5,7 @@
 //    radius), including tests whose answer is a step function (a stick-slip frequency counted in samples);
 //  * illinoisRoot: a continuous residual with a sign change (the viscous law's temperature), by false
 //  position
-//    with the Illinois modification, which keeps the bracket and converges superlinearly.
+//    with the Illinois modification [DowellJarratt1971], which keeps the bracket and converges superlinearly.
 // Header-only and allocation-free, so a friction law may call it per sample.
 #include <cmath>
 

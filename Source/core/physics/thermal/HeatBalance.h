@@ -1,5 +1,5 @@
 #pragma once
-// Single contact temperature of the rosin layer ([Smith2000]; Smith & Woodhouse 2000 as reconstructed in
+// Single contact temperature of the rosin layer ([Smith2000], as reconstructed in
 // [Notes §2.3-2.5] with the correction of §2.3a): heat balance
 //     C dT/dt = P - Q_adv - Q_stat - Q_mov                                  ([Notes] eq. 2.4)
 // with layer capacity C = rho c pi a^2 delta and advection Q_adv = rho c w delta |dv| T (w = ratio x a) of

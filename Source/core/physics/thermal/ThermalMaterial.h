@@ -1,7 +1,7 @@
 #pragma once
 // The thermal properties of one solid, and the solids of Rosin's contacts ([Notes §2.3a], §2.7).
 // These are handbook values, not fitted to any result of the source texts: [Galluzzo2017] (Table 2 caption)
-// took its values from Table 1 of Woodhouse 2003, which the project could not obtain ([Notes §10] Q2), so
+// took its values from Table 1 of [Woodhouse2003], which the project could not obtain ([Notes §10] Q2), so
 // each solid gets the middle of the range the literature gives for its material, with the source beside it.
 // What follows from them ([Woodhouse-thermal]'s crossing temperatures, [Smith2000]'s stick-slip frequency and
 // contact temperatures) is a prediction, reported in Resources/docs/physics.md, "The source texts, checked".
@@ -49,7 +49,7 @@ struct ContactMaterials
     ThermalMaterial layer = materials::rosin;
     /// The solid the contact stays on (the string, [Smith2000]'s wedge). A played string carries rosin, and
     /// it is taken as rosin here [A]: with it, prescribed Helmholtz sliding gives the ~50 K mean rise
-    /// Euphonics reports for the original model ([Notes §2.6b]); a bare steel surface would hold the rise to
+    /// [Euphonics] 9.6 reports for the original model ([Notes §2.6b]); a bare steel surface would hold the rise to
     /// a few kelvin.
     ThermalMaterial stationary = materials::rosin;
     /// The solid that slides through the contact (the rod or the bow hair). Galluzzo's rod: acrylic with a

@@ -199,7 +199,7 @@ void BowedStringVoice::Impl::updateWeights()
     const double D = 1.0 + bridgeCoupling;
     const double kappa = (1.0 - beta - A1) / D;
     double y0 = Ya - Bv * U2 * kappa + (1.0 - beta) * U1 * kappa;
-    // A string answers a sudden force at a point with v = f / (2 Z_eff) at once (McIntyre, Schumacher &
+    // A string answers a sudden force at a point with v = f / (2 Z_eff) at once ([MSW1983],
     // Woodhouse; [Notes] eq. 1.2). The modal bank stops at 0.45 fs, so it spreads that delta over two
     // samples and its admittance almost vanishes at Nyquist: a sticking contact (a velocity constraint) then
     // lets the friction force ring at Nyquist. Adding c (1 - z^-1), c = 1/(2 Z_eff) - y0, moves the spread

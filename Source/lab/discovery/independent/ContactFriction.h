@@ -9,7 +9,7 @@
 //          slides back at (|f| - threshold) / resistance, which lowers the force it needs;
 //   slide  otherwise, at |f| = A tau_y(T(P)) with P = |f| |dv| and T(P) = free + P / pivot from the heat
 //          step: one unknown |f| in [0, |dv_h| / Y], bracketed (the residual is negative at 0 and positive at
-//          the sticking force), solved by the Illinois method.
+//          the sticking force), solved by the Illinois method [DowellJarratt1971].
 #include "lab/discovery/independent/ContactHeat.h"
 #include "lab/discovery/independent/OwnEffects.h"
 #include "lab/discovery/independent/YieldStressTable.h"

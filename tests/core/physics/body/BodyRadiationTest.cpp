@@ -1,6 +1,6 @@
 // What the listener hears from the body (BodyRadiation.h): the sound pressure the discrete body produces is
 // checked against the continuous modal radiativity (a second method), against physics that needs no model
-// (no DC from a held force), and against Bissinger's violin measurements (radiated share of the corpus
+// (no DC from a held force), and against Bissinger's violin measurements [Bissinger2008] (radiated share of the corpus
 // bending modes, the fall above 4 kHz).
 #include <gtest/gtest.h>
 
@@ -101,7 +101,7 @@ TEST(BodyRadiation, AHeldForceIsNotHeard)
     EXPECT_LT(lateVelocity, 1e-4 * peakVelocity); // the modal state's single-precision round-off
 }
 
-// Bissinger (JASA 2008): the violin's first corpus bending modes radiate 31 % +- 10 % of their vibrational
+// [Bissinger2008]: the violin's first corpus bending modes radiate 31 % +- 10 % of their vibrational
 // energy. With sigma from the same paper, the plates' surface density and the modes' Q the model gives:
 TEST(BodyRadiation, ViolinCorpusBendingModesRadiateAboutAThirdOfTheirLosses)
 {
@@ -120,7 +120,7 @@ TEST(BodyRadiation, ViolinCorpusBendingModesRadiateAboutAThirdOfTheirLosses)
     EXPECT_LT(sum / count, 0.41);
 }
 
-// Violin radiativity profiles (Bissinger, "Structural acoustics model of the violin radiativity profile",
+// Violin radiativity profiles ([Bissinger2008], "Structural acoustics model of the violin radiativity profile",
 // JASA 2008): weak below A0, strong from the B1 modes to the bridge hill, falling above ~4 kHz.
 TEST(BodyRadiation, ViolinRadiativityRisesThroughTheSignatureModesAndFallsAboveFourKilohertz)
 {
