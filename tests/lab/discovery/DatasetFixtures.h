@@ -1,6 +1,6 @@
 #pragma once
-// The spec's example dataset.json (Resources/docs/measurements.md, copied verbatim) and a scratch dataset folder
-// to write variants of it into.
+// The spec's example dataset.json (Resources/docs/measurements.md, copied verbatim) and a scratch dataset
+// folder to write variants of it into.
 #include <filesystem>
 #include <fstream>
 #include <string>

@@ -3,8 +3,8 @@
 // excursion that the bridge's losses impose ([Notes] eq. 6.4-6.5, Raman's dashpot in the limit). In this
 // model the sticking force also carries a ripple: the Helmholtz corner is re-sharpened at every slip and its
 // high harmonics, dispersed by bending stiffness, come back to the bow during sticking. The ripple scales
-// with the corner's velocity jump v_b / beta ([Cremer1984]), as F_max does, so a lower edge set by it runs parallel
-// to the upper edge (slope -1) instead of -2.
+// with the corner's velocity jump v_b / beta ([Cremer1984]), as F_max does, so a lower edge set by it runs
+// parallel to the upper edge (slope -1) instead of -2.
 //
 // Checked here on steady Helmholtz motion (classical curve, cello D3 on its body, v_b = 0.05 m/s,
 // N = F_max / 2, established by an attack inside Guettler's wedge): the ripple (peak to peak of the sticking

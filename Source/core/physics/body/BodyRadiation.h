@@ -25,10 +25,10 @@ inline constexpr double kAirDensity = 1.204;   ///< rho0, kg/m^3
 inline constexpr double kSpeedOfSound = 343.2; ///< c0, m/s
 
 /// Radiation efficiency of a statistical (or band) mode at frequency f: sigma = min(1, f / unityHz). Fitted
-/// through Bissinger's violin measurements [Bissinger2008] ("Radiation damping, efficiency, and directivity for violin normal
-/// modes below 4 kHz", JASA 2008: first corpus bending modes 0.12 +- 0.03 and 0.11 +- 0.04 near 500 Hz,
-/// rising to ~1 by 4 kHz): unity at 4.2 kHz for the violin. The cello, a violin scaled ~2.1x in length, has
-/// the same ka at 1/2.1 the frequency [A]: unity at 2.0 kHz.
+/// through Bissinger's violin measurements [Bissinger2008] ("Radiation damping, efficiency, and directivity
+/// for violin normal modes below 4 kHz", JASA 2008: first corpus bending modes 0.12 +- 0.03 and 0.11 +- 0.04
+/// near 500 Hz, rising to ~1 by 4 kHz): unity at 4.2 kHz for the violin. The cello, a violin scaled ~2.1x in
+/// length, has the same ka at 1/2.1 the frequency [A]: unity at 2.0 kHz.
 double statisticalRadiationEfficiency(const BodyRadiation& radiation, double frequencyHz) noexcept;
 
 /// Directivity toward the listener, D(f) = min(2, 1 + f / directivityHz): Bissinger's averaged directivity

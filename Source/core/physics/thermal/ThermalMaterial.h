@@ -49,8 +49,8 @@ struct ContactMaterials
     ThermalMaterial layer = materials::rosin;
     /// The solid the contact stays on (the string, [Smith2000]'s wedge). A played string carries rosin, and
     /// it is taken as rosin here [A]: with it, prescribed Helmholtz sliding gives the ~50 K mean rise
-    /// [Euphonics] 9.6 reports for the original model ([Notes §2.6b]); a bare steel surface would hold the rise to
-    /// a few kelvin.
+    /// [Euphonics] 9.6 reports for the original model ([Notes §2.6b]); a bare steel surface would hold the
+    /// rise to a few kelvin.
     ThermalMaterial stationary = materials::rosin;
     /// The solid that slides through the contact (the rod or the bow hair). Galluzzo's rod: acrylic with a
     /// rubbed-on rosin film ([Galluzzo2017] §2.1, "the low thermal conductivity of acrylic allows this").

@@ -1,5 +1,6 @@
 #pragma once
-// The independent generator's string: a digital waveguide in the manner of McIntyre, Schumacher and Woodhouse [MSW1983]
+// The independent generator's string: a digital waveguide in the manner of McIntyre, Schumacher and Woodhouse
+// [MSW1983]
 // ([Notes §1.1-1.2]), not Rosin's modal sum. The bow divides the string into a bridge-side segment (beta L)
 // and a nut-side segment ((1 - beta) L); on each, velocity waves run to the far end and back through a
 // fractional delay line with the segment's share of the string's losses (LossFilter). The bow point sees

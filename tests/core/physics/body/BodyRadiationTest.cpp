@@ -1,7 +1,7 @@
 // What the listener hears from the body (BodyRadiation.h): the sound pressure the discrete body produces is
 // checked against the continuous modal radiativity (a second method), against physics that needs no model
-// (no DC from a held force), and against Bissinger's violin measurements [Bissinger2008] (radiated share of the corpus
-// bending modes, the fall above 4 kHz).
+// (no DC from a held force), and against Bissinger's violin measurements [Bissinger2008] (radiated share of
+// the corpus bending modes, the fall above 4 kHz).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -120,8 +120,8 @@ TEST(BodyRadiation, ViolinCorpusBendingModesRadiateAboutAThirdOfTheirLosses)
     EXPECT_LT(sum / count, 0.41);
 }
 
-// Violin radiativity profiles ([Bissinger2008], "Structural acoustics model of the violin radiativity profile",
-// JASA 2008): weak below A0, strong from the B1 modes to the bridge hill, falling above ~4 kHz.
+// Violin radiativity profiles ([Bissinger2008], "Structural acoustics model of the violin radiativity
+// profile", JASA 2008): weak below A0, strong from the B1 modes to the bridge hill, falling above ~4 kHz.
 TEST(BodyRadiation, ViolinRadiativityRisesThroughTheSignatureModesAndFallsAboveFourKilohertz)
 {
     const BodyParameters violin = violinBody();

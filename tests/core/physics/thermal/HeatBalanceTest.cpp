@@ -134,12 +134,12 @@ TEST(HeatBalance, HelmholtzMotionTemperaturesAgreeAcrossSampleRates)
             rates[r], means[r], lo, hi, swings[r]);
     }
     EXPECT_NEAR(means[0], means[1], 1.0);
-    // A prediction against a secondary source: the account of the original model in [Euphonics] 9.6, a mean rise of ~50 K
-    // with ~30 K swing per cycle ([Notes §2.6b]). Measured with both solids conducting: mean 18.6-18.9 K,
-    // swing 36 K. The swing agrees; the mean is ~2.7x lower, since the moving side now also takes heat while
-    // stuck and its patch is refreshed by every flyback (the old one-sided balance gave 56-65 K). The band
-    // asserted is the measured one with room for the uncertain constants; it still catches gross errors (a
-    // steel stationary side gives ~1 K, a wrong area scale moves the rise by the area ratio).
+    // A prediction against a secondary source: the account of the original model in [Euphonics] 9.6, a mean
+    // rise of ~50 K with ~30 K swing per cycle ([Notes §2.6b]). Measured with both solids conducting:
+    // mean 18.6-18.9 K, swing 36 K. The swing agrees; the mean is ~2.7x lower, since the moving side now also
+    // takes heat while stuck and its patch is refreshed by every flyback (the old one-sided balance gave
+    // 56-65 K). The band asserted is the measured one with room for the uncertain constants; it still catches
+    // gross errors (a steel stationary side gives ~1 K, a wrong area scale moves the rise by the area ratio).
     for (int r = 0; r < 2; ++r)
     {
         EXPECT_GT(means[r], 12.0);
