@@ -80,6 +80,25 @@ void requireChoice(const std::string& option, const std::string& value,
         badOptionValue(option, config::oneOfText(allowed), value);
 }
 
+std::string wrapWords(const std::vector<std::string>& words, const std::string& first, std::size_t indent,
+                      std::size_t width)
+{
+    std::string result, line = first;
+    bool lineEmpty = true;
+    for (const std::string& word : words)
+    {
+        if (!lineEmpty && line.size() + 1 + word.size() > width)
+        {
+            result += line + "\n";
+            line.assign(indent, ' ');
+            lineEmpty = true;
+        }
+        line += (lineEmpty ? "" : " ") + word;
+        lineEmpty = false;
+    }
+    return result + line + "\n";
+}
+
 std::string significant(double value, int digits)
 {
     char buffer[64];

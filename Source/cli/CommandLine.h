@@ -45,6 +45,11 @@ double parseNumber(const std::string& option, const std::string& text);
 void requireChoice(const std::string& option, const std::string& value,
                    const std::vector<std::string>& allowed);
 
+/// `words` joined by single spaces and wrapped at `width` columns: the first line starts with `first`, every
+/// further line with `indent` spaces. Ends with a newline.
+std::string wrapWords(const std::vector<std::string>& words, const std::string& first, std::size_t indent,
+                      std::size_t width);
+
 /// `value` with `digits` significant digits (printf's %g), for messages and reports.
 std::string significant(double value, int digits);
 

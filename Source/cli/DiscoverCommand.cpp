@@ -121,7 +121,7 @@ std::string discoverHelp()
 
 DiscoverCommandLine parseDiscoverCommandLine(const std::vector<std::string>& args)
 {
-    DiscoverCommandLine c{std::string(), discoverOptionTable().parse({})};
+    DiscoverCommandLine c{std::string(), ParsedOptions({})};
     std::vector<std::string> rest = args;
     if (!rest.empty() && rest.front().rfind("-", 0) != 0)
     {

@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "cli/CommandLine.h"
+
 namespace rosin::cli
 {
 
@@ -44,26 +46,8 @@ std::vector<std::string> usageWords(const std::string& form)
 /// A usage form wrapped at kWidth, continuation lines under the first argument.
 std::string wrapUsage(const std::string& prefix, const std::string& form, const std::string& command)
 {
-    const std::string indent(prefix.size() + std::string("rosin ").size() + command.size() + 1, ' ');
-    std::string text = prefix, line = prefix;
-    bool first = true;
-    for (const std::string& word : usageWords(form))
-    {
-        if (!first && line.size() + 1 + word.size() > kWidth)
-        {
-            text += "\n" + indent;
-            line = indent;
-        }
-        else if (!first)
-        {
-            text += " ";
-            line += " ";
-        }
-        text += word;
-        line += word;
-        first = false;
-    }
-    return text + "\n";
+    const std::size_t indent = prefix.size() + std::string("rosin ").size() + command.size() + 1;
+    return wrapWords(usageWords(form), prefix, indent, kWidth);
 }
 
 bool kept(const std::string& line)

@@ -141,21 +141,14 @@ std::string probeComment()
 // Word-wraps `text` to `width` columns, every line indented by `indent` spaces.
 std::string wrap(const std::string& text, std::size_t indent, std::size_t width)
 {
-    std::string result, line(indent, ' ');
-    std::size_t pos = 0;
-    while (pos < text.size())
+    std::vector<std::string> words;
+    for (std::size_t pos = 0; pos < text.size();)
     {
         const std::size_t space = std::min(text.find(' ', pos), text.size());
-        const std::string word = text.substr(pos, space - pos);
-        if (line.size() > indent && line.size() + 1 + word.size() > width)
-        {
-            result += line + "\n";
-            line.assign(indent, ' ');
-        }
-        line += (line.size() > indent ? " " : "") + word;
+        words.push_back(text.substr(pos, space - pos));
         pos = space + 1;
     }
-    return result + line + "\n";
+    return wrapWords(words, std::string(indent, ' '), indent, width);
 }
 
 } // namespace

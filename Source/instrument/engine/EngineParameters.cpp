@@ -40,11 +40,11 @@ namespace
 // The player's defaults are the parameters' defaults: said once, in player::GestureParameters.
 namespace defaults
 {
-constexpr player::GestureParameters player{};
-constexpr float bowForce = static_cast<float>(player.bowForce),
-                bowSpeed = static_cast<float>(player.bowSpeed),
-                attackAcceleration = static_cast<float>(player.attackAcceleration),
-                beta = static_cast<float>(player.beta);
+constexpr player::GestureParameters playerDefaults{};
+constexpr float bowForce = static_cast<float>(playerDefaults.bowForce),
+                bowSpeed = static_cast<float>(playerDefaults.bowSpeed),
+                attackAcceleration = static_cast<float>(playerDefaults.attackAcceleration),
+                beta = static_cast<float>(playerDefaults.beta);
 constexpr float ambientCelsius = 20.0f;
 } // namespace defaults
 
