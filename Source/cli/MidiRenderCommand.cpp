@@ -23,7 +23,7 @@ namespace
 struct MidiOptions
 {
     std::string midi, out = "rosin-midi.wav";
-    std::string preset = "cello-plastic";
+    std::string preset = engine::kDefaultProgramName;
     std::string automation;
     engine::OutputChoice output = engine::OutputChoice::RadiatedSound;
     std::string bodyResponse; ///< a measured body response (WAV), empty: the modal body
@@ -57,7 +57,9 @@ const OptionTable& midiOptionTable()
 {
     static const OptionTable table({
         {"--midi", "FILE.mid", "standard MIDI file; all tracks are merged (the manual's MIDI map)"},
-        {"--preset", "NAME", "a factory program (default cello-plastic): one of the presets/ names"},
+        {"--preset", "NAME",
+         std::string("a factory program (default ") + engine::kDefaultProgramName +
+             "): one of the presets/ names"},
         {"--automation", "FILE.json",
          "parameter lanes, \"format\": \"rosin-automation/1\" (the manual's\n"
          "rendering page)"},

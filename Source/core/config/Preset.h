@@ -31,6 +31,16 @@ struct RigPreset
     double rodSpeed = physics::CantileverLoad::rodSpeed;       ///< m/s: what `steady` without keys moves at
 };
 
+/// How a program plays (the "player" object): the musical mapping and its settings; absent values keep the
+/// host parameters' defaults (player::GestureParameters).
+struct PlayerPreset
+{
+    std::string mapping = "musical"; ///< "lab" or "musical"
+    std::optional<double> dynamics, bowPressure, vibratoDepth, vibratoRate, vibratoDelay, slideTime,
+        tremoloRate;
+    std::optional<std::string> articulation; ///< "arco" or "pizzicato"
+};
+
 struct Preset
 {
     std::string name = "galluzzo-rig";
@@ -52,7 +62,8 @@ struct Preset
     /// The plugin's measured body response for this program (absolute path of a WAV file; the file may give
     /// it relative to its own folder): bridge force (N) to sound pressure (Pa). Absent: the modal body.
     std::optional<std::string> bodyResponse;
-    std::optional<RigPreset> rig; ///< set: the rig is bowed instead of the string and body
+    std::optional<RigPreset> rig;       ///< set: the rig is bowed instead of the string and body
+    std::optional<PlayerPreset> player; ///< absent: the lab mapping (the lab programs)
 };
 
 /// The renderer's default: open cello D3 of the Galluzzo rig [Galluzzo2017], cello body, plastic friction,

@@ -178,12 +178,37 @@ Preset loadPreset(const std::string& nameOrPath)
     return parsePreset(readJsonFile(path), path, fs::path(path).stem().string());
 }
 
+namespace
+{
+void parsePlayer(const JsonObject& r, Preset& p)
+{
+    if (!r.has("player"))
+        return;
+    const JsonObject o = r.object("player");
+    o.allowOnly({"mapping", "dynamics", "bowPressure", "vibratoDepth", "vibratoRate", "vibratoDelay",
+                 "slideTime", "tremoloRate", "articulation"});
+    namespace l = gesture::limits;
+    PlayerPreset player;
+    player.mapping = o.optionalOneOf("mapping", {"lab", "musical"}).value_or(player.mapping);
+    player.dynamics = o.optionalNumber("dynamics", l::dynamics);
+    player.bowPressure = o.optionalNumber("bowPressure", l::bowPressure);
+    player.vibratoDepth = o.optionalNumber("vibratoDepth", l::vibratoDepth);
+    player.vibratoRate = o.optionalNumber("vibratoRate", l::vibratoRate);
+    player.vibratoDelay = o.optionalNumber("vibratoDelay", l::vibratoDelay);
+    player.slideTime = o.optionalNumber("slideTime", l::slideTime);
+    player.tremoloRate = o.optionalNumber("tremoloRate", l::tremoloRate);
+    player.articulation = o.optionalOneOf("articulation", {"arco", "pizzicato"});
+    p.player = player;
+}
+} // namespace
+
 Preset parsePreset(const nlohmann::json& root, const std::string& file, const std::string& defaultName)
 {
     requireFormat(root, file, "rosin-preset/1");
     const JsonObject r(root, file, "");
     r.allowOnly({"format", "name", "description", "string", "body", "friction", "contact", "torsion",
-                 "bendingStiffness", "ambientOffset", "beta", "outputLevel", "bodyResponse", "rig"});
+                 "bendingStiffness", "ambientOffset", "beta", "outputLevel", "bodyResponse", "rig",
+                 "player"});
 
     Preset p = defaultPreset();
     p.source = file;
@@ -216,6 +241,7 @@ Preset parsePreset(const nlohmann::json& root, const std::string& file, const st
         p.bodyResponse = std::filesystem::absolute(path).lexically_normal().string();
     }
     parseRig(r, p);
+    parsePlayer(r, p);
     return p;
 }
 

@@ -24,6 +24,14 @@ inline constexpr Range finger{0.1, 1.0, ""};
 inline constexpr Range seconds{0.0, 600.0, "s", true};
 /// The whole gesture, so a render's memory stays bounded.
 inline constexpr Range totalSeconds{0.0, 600.0, "s", true};
+// The musical mapping's settings (player::GestureParameters; presets' "player" object).
+inline constexpr Range dynamics{0.0, 1.0, ""};
+inline constexpr Range bowPressure{0.0, 1.0, ""};
+inline constexpr Range vibratoDepth{0.0, 40.0, "cents"};
+inline constexpr Range vibratoRate{3.0, 9.0, "Hz"};
+inline constexpr Range vibratoDelay{0.0, 1.5, "s"};
+inline constexpr Range slideTime{0.02, 0.5, "s"};
+inline constexpr Range tremoloRate{4.0, 20.0, "Hz"};
 } // namespace limits
 
 /// A gesture value outside its range or of the wrong form. `field` is a path such as "beta" or

@@ -33,6 +33,7 @@ void BlockPlayer::prepare(const Engine& engine, double sampleRate, int maximumBl
     performer_.prepare(engine.serial, engine.openFrequencies.data(), engine.instrument.stringCount(),
                        sampleRate);
     performer_.setForceShares(engine.forceShares.data(), engine.instrument.stringCount());
+    performer_.setBands(engine.bands.data(), engine.instrument.stringCount());
     output_.prepare(sampleRate, kGainSmoothingSeconds, maximumBlockSize);
 }
 
@@ -41,6 +42,7 @@ void BlockPlayer::follow(const Engine& engine) noexcept
     performer_.follow(engine.serial, engine.openFrequencies.data(), engine.instrument.stringCount(),
                       engine.sampleRate);
     performer_.setForceShares(engine.forceShares.data(), engine.instrument.stringCount());
+    performer_.setBands(engine.bands.data(), engine.instrument.stringCount());
 }
 
 void BlockPlayer::reset(Engine& engine) noexcept

@@ -25,6 +25,20 @@ double schellengConductance(const physics::InstrumentConfig& config, std::size_t
     return body + (z0 > 0.0 ? std::numbers::pi * eta / (2.0 * z0) : 0.0);
 }
 
+player::PlayableBand playableBand(const physics::InstrumentConfig& config, std::size_t i,
+                                  const physics::FrictionLimits& friction)
+{
+    player::PlayableBand band;
+    band.Z0 = config.strings[i].impedance();
+    band.conductance = schellengConductance(config, i);
+    band.muStatic = friction.muStatic;
+    band.muDynamic = friction.muDynamic;
+    band.periodTimesZ0 = band.Z0 / config.strings[i].fundamental();
+    band.lowerEdge = player::kMeasuredLowerEdge;
+    band.upperEdge = player::kMeasuredUpperEdge;
+    return band;
+}
+
 double bowForceShare(double impedance)
 {
     static const double reference = physics::stringFromCatalogue(kBowForceReferenceString).impedance();
@@ -50,6 +64,7 @@ std::unique_ptr<Engine> buildEngine(const InstrumentKey& key, const ProgramExtra
         config = buildInstrumentConfig(key, ProgramExtras{});
     }
     engine->instrument.prepare(config, sampleRate);
+    const auto friction = physics::frictionLimits(config.friction, config.contact, sampleRate);
     for (int i = 0;
          i < engine->instrument.stringCount() && i < static_cast<int>(engine->openFrequencies.size()); ++i)
     {
@@ -58,6 +73,7 @@ std::unique_ptr<Engine> buildEngine(const InstrumentKey& key, const ProgramExtra
         engine->impedances[k] = engine->instrument.config().strings[k].impedance();
         engine->bridgeConductances[k] = schellengConductance(engine->instrument.config(), k);
         engine->forceShares[k] = bowForceShare(engine->impedances[k]);
+        engine->bands[k] = playableBand(engine->instrument.config(), k, friction);
     }
     return engine;
 }

@@ -6,8 +6,10 @@
 #include <memory>
 
 #include "core/physics/instrument/BowedInstrument.h"
+#include "core/physics/laws/FrictionLimits.h"
 #include "instrument/engine/EngineParameters.h"
 #include "instrument/engine/InstrumentSetup.h"
+#include "instrument/player/PlayableBand.h"
 
 namespace rosin::engine
 {
@@ -20,9 +22,10 @@ struct Engine
     double sampleRate = 48000.0;
     physics::BowedInstrument instrument;
     std::array<double, 8> openFrequencies{};
-    std::array<double, 8> impedances{};         ///< Z0 per string, kg/s (editor's Schelleng diagram)
-    std::array<double, 8> bridgeConductances{}; ///< per string, s/kg (schellengConductance)
-    std::array<double, 8> forceShares{};        ///< per string, bowForceShare of its Z0
+    std::array<double, 8> impedances{};          ///< Z0 per string, kg/s (editor's Schelleng diagram)
+    std::array<double, 8> bridgeConductances{};  ///< per string, s/kg (schellengConductance)
+    std::array<double, 8> forceShares{};         ///< per string, bowForceShare of its Z0
+    std::array<player::PlayableBand, 8> bands{}; ///< per string, for the musical mapping (playableBand)
 };
 
 /// The string whose impedance the Bow force parameter refers to: the cello's C string.
@@ -34,6 +37,11 @@ inline constexpr const char* kBowForceReferenceString = "cello-C2";
 /// alike by the force (the flattening grows with that fraction). One force for all strings had put the
 /// cello's open A 20 cents flat and the violin's open D 37 cents flat at the default 1 N.
 double bowForceShare(double impedance);
+
+/// String i's playable band: its Z0, schellengConductance and the friction law's limits
+/// (physics::frictionLimits).
+player::PlayableBand playableBand(const physics::InstrumentConfig& config, std::size_t i,
+                                  const physics::FrictionLimits& friction);
 
 /// Builds and prepares the instrument of `key` with `extras` at `sampleRate`. A program whose extras do not
 /// build (an invalid preset) is reported on stderr and the instrument's defaults are used.

@@ -22,7 +22,16 @@ const std::array<const char*, kParameterCount>& allParameterIds()
                                                                   ids::output,
                                                                   ids::dcBlocker,
                                                                   ids::bypass,
-                                                                  ids::quality};
+                                                                  ids::quality,
+                                                                  ids::mapping,
+                                                                  ids::dynamics,
+                                                                  ids::bowPressure,
+                                                                  ids::vibratoDepth,
+                                                                  ids::vibratoRate,
+                                                                  ids::vibratoDelay,
+                                                                  ids::slideTime,
+                                                                  ids::tremoloRate,
+                                                                  ids::articulation};
     return list;
 }
 
@@ -45,6 +54,13 @@ constexpr float bowForce = static_cast<float>(playerDefaults.bowForce),
                 bowSpeed = static_cast<float>(playerDefaults.bowSpeed),
                 attackAcceleration = static_cast<float>(playerDefaults.attackAcceleration),
                 beta = static_cast<float>(playerDefaults.beta);
+constexpr float dynamics = static_cast<float>(playerDefaults.dynamics),
+                bowPressure = static_cast<float>(playerDefaults.bowPressure),
+                vibratoDepth = static_cast<float>(playerDefaults.vibratoDepth),
+                vibratoRate = static_cast<float>(playerDefaults.vibratoRate),
+                vibratoDelay = static_cast<float>(playerDefaults.vibratoDelay),
+                slideTime = static_cast<float>(playerDefaults.slideTime),
+                tremoloRate = static_cast<float>(playerDefaults.tremoloRate);
 constexpr float ambientCelsius = 20.0f;
 } // namespace defaults
 
@@ -120,6 +136,20 @@ std::vector<ParameterSpec> buildSpecs()
     s.push_back(onOff(ids::bypass, "Bypass", false));
     // Appended, not inserted: the table's order is the automation files' and the saved states' order.
     s.push_back(choice(ids::quality, "Quality", {"full", "live"}, static_cast<int>(ModelQuality::Full)));
+    // The musical mapping's (player::GestureParameters). Its default is the lab's, which projects saved
+    // before it existed played with; the musical programs set it.
+    s.push_back(choice(ids::mapping, "Mapping", {"lab", "musical"}, static_cast<int>(player::Mapping::Lab)));
+    s.push_back(physical(ids::dynamics, "Dynamics", r::dynamics, defaults::dynamics, 0.0f, 2));
+    s.push_back(physical(ids::bowPressure, "Bow pressure", r::bowPressure, defaults::bowPressure, 0.0f, 2));
+    s.push_back(
+        physical(ids::vibratoDepth, "Vibrato depth", r::vibratoDepth, defaults::vibratoDepth, 0.0f, 1));
+    s.push_back(physical(ids::vibratoRate, "Vibrato rate", r::vibratoRate, defaults::vibratoRate, 0.0f, 2));
+    s.push_back(
+        physical(ids::vibratoDelay, "Vibrato delay", r::vibratoDelay, defaults::vibratoDelay, 0.0f, 2));
+    s.push_back(physical(ids::slideTime, "Slide time", r::slideTime, defaults::slideTime, 0.0f, 3));
+    s.push_back(physical(ids::tremoloRate, "Tremolo rate", r::tremoloRate, defaults::tremoloRate, 0.0f, 1));
+    s.push_back(choice(ids::articulation, "Articulation", {"arco", "pizzicato"},
+                       static_cast<int>(player::Articulation::Arco)));
     return s;
 }
 
@@ -211,6 +241,16 @@ ParameterSnapshot snapshotOf(const RawParameterValues& raw, int stringCount) noe
     s.gesture.bowSpeed = finiteOr(raw[P::bowSpeed], defaults::bowSpeed);
     s.gesture.attackAcceleration = finiteOr(raw[P::attackAcceleration], defaults::attackAcceleration);
     s.gesture.beta = finiteOr(raw[P::beta], defaults::beta);
+    s.gesture.mapping = raw[P::mapping] >= 0.5f ? player::Mapping::Musical : player::Mapping::Lab;
+    s.gesture.dynamics = finiteOr(raw[P::dynamics], defaults::dynamics);
+    s.gesture.bowPressure = finiteOr(raw[P::bowPressure], defaults::bowPressure);
+    s.gesture.vibratoDepth = finiteOr(raw[P::vibratoDepth], defaults::vibratoDepth);
+    s.gesture.vibratoRate = finiteOr(raw[P::vibratoRate], defaults::vibratoRate);
+    s.gesture.vibratoDelay = finiteOr(raw[P::vibratoDelay], defaults::vibratoDelay);
+    s.gesture.slideTime = finiteOr(raw[P::slideTime], defaults::slideTime);
+    s.gesture.tremoloRate = finiteOr(raw[P::tremoloRate], defaults::tremoloRate);
+    s.gesture.articulation =
+        raw[P::articulation] >= 0.5f ? player::Articulation::Pizzicato : player::Articulation::Arco;
     s.stringChoice = std::clamp(static_cast<int>(std::lround(finiteOr(raw[P::string], 0.0f))), 0, 4);
     // String I is the highest, as string players number them; the controller counts from the lowest.
     s.gesture.stringOverride = s.stringChoice == 0 ? -1 : std::max(0, stringCount - s.stringChoice);

@@ -34,6 +34,15 @@ inline constexpr const char* output = "output";                         ///< cho
 inline constexpr const char* dcBlocker = "dcBlocker";                   ///< bool: on force and velocity
 inline constexpr const char* bypass = "bypass";                         ///< bool: the host's bypass (silence)
 inline constexpr const char* quality = "quality";                       ///< choice: full, live (ModelQuality)
+inline constexpr const char* mapping = "mapping";                       ///< choice: lab, musical
+inline constexpr const char* dynamics = "dynamics";                     ///< pp 0 .. ff 1 (musical)
+inline constexpr const char* bowPressure = "bowPressure";               ///< flautando 0 .. scratch 1
+inline constexpr const char* vibratoDepth = "vibratoDepth";             ///< cents, 0..40
+inline constexpr const char* vibratoRate = "vibratoRate";               ///< Hz, 3..9
+inline constexpr const char* vibratoDelay = "vibratoDelay";             ///< s, 0..1.5
+inline constexpr const char* slideTime = "slideTime";                   ///< s, the slowest slur, 0.02..0.5
+inline constexpr const char* tremoloRate = "tremoloRate";               ///< bow changes per second, 4..20
+inline constexpr const char* articulation = "articulation";             ///< choice: arco, pizzicato
 inline constexpr int version = 1;
 } // namespace ids
 
@@ -54,9 +63,18 @@ enum class ParameterIndex : int
     output,
     dcBlocker,
     bypass,
-    quality
+    quality,
+    mapping,
+    dynamics,
+    bowPressure,
+    vibratoDepth,
+    vibratoRate,
+    vibratoDelay,
+    slideTime,
+    tremoloRate,
+    articulation
 };
-inline constexpr int kParameterCount = static_cast<int>(ParameterIndex::quality) + 1;
+inline constexpr int kParameterCount = static_cast<int>(ParameterIndex::articulation) + 1;
 /// Every parameter ID, in the table's order.
 const std::array<const char*, kParameterCount>& allParameterIds();
 /// Index of `id` in allParameterIds(), or -1.

@@ -65,6 +65,25 @@ int findProgram(const std::vector<FactoryProgram>& programs, const std::string& 
 
 std::vector<std::pair<const char*, float>> programParameterValues(const config::Preset& preset)
 {
+    auto values = instrumentParameterValues(preset);
+    const config::PlayerPreset player = preset.player.value_or(config::PlayerPreset{"lab"});
+    const player::GestureParameters defaults{};
+    values.emplace_back(ids::mapping, player.mapping == "musical" ? 1.0f : 0.0f);
+    const auto add = [&](const char* id, std::optional<double> value, double fallback)
+    { values.emplace_back(id, static_cast<float>(value.value_or(fallback))); };
+    add(ids::dynamics, player.dynamics, defaults.dynamics);
+    add(ids::bowPressure, player.bowPressure, defaults.bowPressure);
+    add(ids::vibratoDepth, player.vibratoDepth, defaults.vibratoDepth);
+    add(ids::vibratoRate, player.vibratoRate, defaults.vibratoRate);
+    add(ids::vibratoDelay, player.vibratoDelay, defaults.vibratoDelay);
+    add(ids::slideTime, player.slideTime, defaults.slideTime);
+    add(ids::tremoloRate, player.tremoloRate, defaults.tremoloRate);
+    values.emplace_back(ids::articulation, player.articulation.value_or("arco") == "pizzicato" ? 1.0f : 0.0f);
+    return values;
+}
+
+std::vector<std::pair<const char*, float>> instrumentParameterValues(const config::Preset& preset)
+{
     return {{ids::instrument, static_cast<float>(instrumentIndexForPreset(preset))},
             {ids::friction,
              static_cast<float>(static_cast<int>(physics::frictionModelFromName(preset.friction)))},

@@ -19,7 +19,7 @@ struct FactoryProgram
 };
 
 /// The program a new instance starts with.
-inline constexpr const char* kDefaultProgramName = "cello-plastic";
+inline constexpr const char* kDefaultProgramName = "cello-solo";
 
 /// Every embedded preset that loads, by name; presets that fail to load are skipped (and reported on stderr).
 std::vector<FactoryProgram> loadFactoryPrograms();
@@ -29,6 +29,9 @@ int findProgram(const std::vector<FactoryProgram>& programs, const std::string& 
 /// The host parameters a program sets (its slow settings, so a host sees and automates them), as
 /// (parameter ID, plain value). What it sets beyond them is ProgramExtras (InstrumentSetup.h) and its
 /// measured body response.
+/// Every program sets the player's parameters too: the lab mapping without a "player" object.
 std::vector<std::pair<const char*, float>> programParameterValues(const config::Preset& preset);
+/// The instrument's part of them (instrument, friction, body, ambient, beta, output level).
+std::vector<std::pair<const char*, float>> instrumentParameterValues(const config::Preset& preset);
 
 } // namespace rosin::engine

@@ -64,6 +64,12 @@ class Performer
     {
         controller_.setForceShares(shares, strings);
     }
+    /// Each string's playable band (player::MidiGestureController::setBands); after prepare() or follow().
+    void setBands(const player::PlayableBand* bands, int strings) noexcept
+    {
+        controller_.setBands(bands, strings);
+    }
+    const player::MidiGestureController& controller() const noexcept { return controller_; }
     /// Gesture, ears and meters back to rest (the instrument is the caller's).
     void reset() noexcept;
     /// No instrument any more: the next follow() prepares the gesture whatever the strings.

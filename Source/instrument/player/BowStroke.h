@@ -12,6 +12,12 @@
 //    against the transients of interest. The attack's extra force relaxes to the nominal force (50 ms).
 //  * Release: force and velocity fall linearly to exactly 0 over releaseSeconds (the bow leaves the string);
 //    the string then rings on its own.
+//  * Crossing (a slur onto another string): the bow arrives already moving, the force ramps in from 0 over
+//    crossingSeconds while the string it leaves is lifted over the same time.
+//  * Pluck (pizzicato): a finger, not the bow: it pulls the string at a constant speed with a firm grip for
+//    the pull time and lets go (force and speed to 0 over pluckReleaseSeconds); the rosin law decides whether
+//    the string slips out of the grip earlier, as a finger's does ([Notes §2], a pluck as a stick-slip
+//    episode). Damp: a finger rests lightly on the string at rest (a stopped pizzicato note ending).
 // Real-time: prepare() may compute exponentials; everything else is allocation-free and noexcept.
 #include <cstdint>
 
@@ -26,6 +32,8 @@ struct StrokeSettings
     double smoothingSeconds = 0.003;       ///< force, speed, beta and finger smoothing
     double releaseSeconds = 0.02;          ///< bow lift: force and speed ramp to 0
     double attackForceRelaxSeconds = 0.05; ///< attack force multiplier back to 1 after the attack
+    double crossingSeconds = 0.03;         ///< a string crossing's force ramp ([Notes]: LibreStrings' 30 ms)
+    double pluckReleaseSeconds = 0.001;    ///< the plucking finger leaves the string
 };
 
 /// What the controller wants for this string now (before smoothing), SI units.
@@ -45,7 +53,9 @@ class BowStroke
         Idle,
         Attack,
         Sustain,
-        Release
+        Release,
+        Pluck,
+        Damp
     };
 
     void prepare(double sampleRate, const StrokeSettings& settings = {});
@@ -57,8 +67,16 @@ class BowStroke
     /// Direction reversal: from the current velocity towards the opposite target at constant acceleration
     /// (also from a lift in progress: the bow had not left the string yet).
     void bowChange(double acceleration, double forceMultiplier) noexcept;
-    /// Lift the bow: linear ramps of force and velocity to 0.
-    void lift() noexcept;
+    /// Lift the bow: linear ramps of force and velocity to 0 (over releaseSeconds, or `seconds` if > 0).
+    void lift(double seconds = 0.0) noexcept;
+    /// A slur onto this string: the bow moving at `velocity` (signed, m/s) from the first sample, the force
+    /// ramped in over crossingSeconds; the finger snaps to `finger` (placed before the bow arrives).
+    void crossOnto(double velocity, double finger) noexcept;
+    /// A pluck: pull at `velocity` (signed, m/s) with `force` (N) for `seconds`, then let go; the finger
+    /// snaps to `finger`.
+    void pluck(double velocity, double force, double seconds, double finger) noexcept;
+    /// A finger rests on the string with `force` (N) and does not move, until the next stroke.
+    void damp(double force) noexcept;
 
     /// The next sample's bow input.
     physics::BowInput next(const StrokeTargets& targets) noexcept;
@@ -76,6 +94,12 @@ class BowStroke
   private:
     double sampleRate_ = 48000.0;
     double releaseSamples_ = 960.0;
+    double defaultReleaseSamples_ = 960.0;
+    double crossingSamples_ = 1440.0;
+    double pluckReleaseSeconds_ = 0.001;
+    std::int64_t pluckSamples_ = 0;
+    double pluckForce_ = 0.0;
+    double crossingRamp_ = 1.0; // 0..1 while the force ramps in after a crossing
     double relaxCoefficient_ = 1.0;
     Phase phase_ = Phase::Idle;
     int strokesFromRest_ = 0;

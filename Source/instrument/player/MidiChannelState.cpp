@@ -27,6 +27,9 @@ void MidiChannelState::resetControllers() noexcept
 {
     ccForce_ = ccSpeed_ = ccBeta_ = ccSlide_ = 64;
     forceFactor_ = pressureFactor_ = speedFactor_ = betaFactor_ = 1.0;
+    dynamics_ = vibrato_ = bowPressure_ = -1.0;
+    vibratoRateFactor_ = vibratoDelayFactor_ = 1.0;
+    tremolo_ = false;
     rpnMsb_ = rpnLsb_ = rpnNull;
     pitchBend_ = 8192;
     updateBend();
@@ -47,11 +50,25 @@ int MidiChannelState::controller(int number, int value) noexcept
     case midimap::ccForce:
         ccForce_ = value;
         forceFactor_ = midimap::controllerFactor(value);
+        vibrato_ = value / 127.0;
         break;
     case midimap::ccSpeed:
     case midimap::ccSpeedAlt:
         ccSpeed_ = value;
         speedFactor_ = midimap::controllerFactor(value);
+        dynamics_ = value / 127.0;
+        break;
+    case midimap::ccBowPressure:
+        bowPressure_ = value / 127.0;
+        break;
+    case midimap::ccVibratoRate:
+        vibratoRateFactor_ = std::exp2((value - 64) / 128.0);
+        break;
+    case midimap::ccVibratoDelay:
+        vibratoDelayFactor_ = std::exp2((value - 64) / 32.0);
+        break;
+    case midimap::ccTremolo:
+        tremolo_ = value >= 64;
         break;
     case midimap::ccBeta:
         ccBeta_ = value;
@@ -103,6 +120,7 @@ int MidiChannelState::controller(int number, int value) noexcept
 void MidiChannelState::setPressure(int value) noexcept
 {
     pressureFactor_ = midimap::controllerFactor(value);
+    bowPressure_ = std::clamp(value, 0, 127) / 127.0;
 }
 
 void MidiChannelState::setPitchBend(int value14) noexcept

@@ -44,6 +44,19 @@ class MidiChannelState
     double fingerFactor() const noexcept { return fingerFactor_; }
     double bendSemitones() const noexcept { return bendSemitones_; }
     double bendRange() const noexcept { return bendRange_; }
+    // The musical mapping's controllers, 0..1 (value / 127), or -1 until one arrives (the parameter rules):
+    /// CC11 or CC2 (the last received): dynamics.
+    double dynamics() const noexcept { return dynamics_; }
+    /// CC1: vibrato depth.
+    double vibrato() const noexcept { return vibrato_; }
+    /// CC20 or channel pressure (the last received): bow pressure.
+    double bowPressure() const noexcept { return bowPressure_; }
+    /// CC76: vibrato rate factor 2^((value - 64) / 128), 1 at the reset value.
+    double vibratoRateFactor() const noexcept { return vibratoRateFactor_; }
+    /// CC78: vibrato delay factor 2^((value - 64) / 32), 1 at the reset value.
+    double vibratoDelayFactor() const noexcept { return vibratoDelayFactor_; }
+    /// CC17 >= 64: tremolo.
+    bool tremolo() const noexcept { return tremolo_; }
     /// The last data-entry MSB (CC6) value.
     int dataEntry() const noexcept { return dataEntry_; }
 
@@ -59,6 +72,9 @@ class MidiChannelState
     int dataEntry_ = 0;
     double forceFactor_ = 1.0, pressureFactor_ = 1.0, speedFactor_ = 1.0, betaFactor_ = 1.0;
     double fingerFactor_ = 1.0, bendSemitones_ = 0.0;
+    double dynamics_ = -1.0, vibrato_ = -1.0, bowPressure_ = -1.0;
+    double vibratoRateFactor_ = 1.0, vibratoDelayFactor_ = 1.0;
+    bool tremolo_ = false;
 };
 
 } // namespace rosin::player

@@ -62,9 +62,22 @@ ChannelControls MidiChannels::controls(int channel) const noexcept
     c.speed = own.speedFactor();
     c.beta = own.betaFactor();
     c.finger = own.fingerFactor();
+    c.dynamics = own.dynamics();
+    c.vibrato = own.vibrato();
+    c.bowPressure = own.bowPressure();
+    c.vibratoRate = own.vibratoRateFactor();
+    c.vibratoDelay = own.vibratoDelayFactor();
+    c.tremolo = own.tremolo();
     if (isMemberChannel(channel))
     {
         const auto& master = channels_[index(kMasterChannel)];
+        const auto ownOrMaster = [](double mine, double masters) { return mine >= 0.0 ? mine : masters; };
+        c.dynamics = ownOrMaster(c.dynamics, master.dynamics());
+        c.vibrato = ownOrMaster(c.vibrato, master.vibrato());
+        c.bowPressure = ownOrMaster(c.bowPressure, master.bowPressure());
+        c.vibratoRate *= master.vibratoRateFactor();
+        c.vibratoDelay *= master.vibratoDelayFactor();
+        c.tremolo = c.tremolo || master.tremolo();
         c.force *= master.forceFactor() * master.pressureFactor();
         c.speed *= master.speedFactor();
         c.beta *= master.betaFactor();

@@ -25,6 +25,10 @@ struct ChannelControls
     double speed = 1.0;
     double beta = 1.0;
     double finger = 1.0; ///< pitch bend as a finger multiplier
+    // The musical mapping's (MidiChannelState): -1 until received; a member channel's own, else the master's.
+    double dynamics = -1.0, vibrato = -1.0, bowPressure = -1.0;
+    double vibratoRate = 1.0, vibratoDelay = 1.0; ///< factors
+    bool tremolo = false;
 };
 
 class MidiChannels

@@ -20,10 +20,30 @@ void MidiGestureController::prepare(const double* openFrequenciesHz, int count, 
     chordWindowSamples_ = static_cast<std::int64_t>(std::llround(kChordWindowSeconds * sampleRate));
     for (int i = 0; i < count; ++i)
         openFrequencies_[static_cast<std::size_t>(i)] = openFrequenciesHz[i];
+    sampleRate_ = sampleRate;
     forceShares_ = unitShares();
-    for (auto& s : strings_)
+    bands_ = {};
+    for (std::size_t i = 0; i < strings_.size(); ++i)
+    {
+        auto& s = strings_[i];
         s.stroke.prepare(sampleRate, settings);
+        s.vibrato.prepare(sampleRate, static_cast<std::uint32_t>(0x5eed + 7919 * i));
+        s.glide.prepare(sampleRate);
+    }
     reset();
+}
+
+void MidiGestureController::setBands(const PlayableBand* bands, int count) noexcept
+{
+    bands_ = {};
+    std::copy(bands, bands + std::min(count, count_), bands_.begin());
+}
+
+Articulation MidiGestureController::articulation() const noexcept
+{
+    if (articulationKeyswitch_ >= 0)
+        return static_cast<Articulation>(articulationKeyswitch_);
+    return parameters_.articulation;
 }
 
 void MidiGestureController::setForceShares(const double* shares, int count) noexcept
@@ -44,10 +64,17 @@ void MidiGestureController::reset() noexcept
         s.channel = 1;
         s.keyDown = s.heldByPedal = false;
         s.finger = 1.0;
-        s.polyPressure = -1.0;
+        s.polyPressure = s.rawPolyPressure = -1.0;
+        s.vibrato.reset();
+        s.glide.reset();
+        s.gliding = false;
     }
     channels_.resetControllers();
     keyswitchString_ = -1;
+    noteSerial_ = 0;
+    nextDirection_ = 0.0;
+    articulationKeyswitch_ = -1;
+    tremoloKeyswitch_ = false;
     sustainPedal_ = false;
     sampleCounter_ = 0;
 }
@@ -55,8 +82,10 @@ void MidiGestureController::reset() noexcept
 bool MidiGestureController::isKeyswitch(int note) const noexcept
 {
     // Only below the lowest string (the defaultString tolerance): a keyswitch never hides a playable note.
-    return note >= midimap::keyswitchAuto && note < midimap::keyswitchFirst + count_ &&
-           note + 0.5 < pitchOfFrequency(openFrequencies_[0]);
+    const bool below = note + 0.5 < pitchOfFrequency(openFrequencies_[0]);
+    const bool stroke = note >= midimap::keyswitchDownBow && note <= midimap::keyswitchTremolo &&
+                        note != midimap::keyswitchUpBow + 1;
+    return below && (stroke || (note >= midimap::keyswitchAuto && note < midimap::keyswitchFirst + count_));
 }
 
 int MidiGestureController::stringForNote(int note, int channel) const noexcept
@@ -121,7 +150,10 @@ void MidiGestureController::handleEvent(const GestureEvent& e) noexcept
         {
             auto& s = strings_[static_cast<std::size_t>(i)];
             if (s.note == e.number && s.channel == e.channel)
+            {
                 s.polyPressure = midimap::controllerFactor(e.value);
+                s.rawPolyPressure = std::clamp(e.value, 0, 127) / 127.0;
+            }
         }
         break;
     case GestureEvent::Type::PitchBend:
@@ -136,10 +168,16 @@ void MidiGestureController::noteOn(int channel, int note, int velocity) noexcept
         return;
     if (isKeyswitch(note))
     {
-        keyswitchString_ = note == midimap::keyswitchAuto ? -1 : note - midimap::keyswitchFirst;
+        if (!articulationKeyswitch(note))
+            keyswitchString_ = note == midimap::keyswitchAuto ? -1 : note - midimap::keyswitchFirst;
         return;
     }
     const int index = stringForNote(note, channel);
+    if (parameters_.mapping == Mapping::Musical)
+    {
+        musicalNoteOn(index, channel, note, velocity);
+        return;
+    }
     auto& s = strings_[static_cast<std::size_t>(index)];
     const double acceleration = parameters_.attackAcceleration * midimap::accelerationScale(velocity);
     const double forceScale = midimap::attackForceScale(velocity);
@@ -173,10 +211,36 @@ void MidiGestureController::noteOff(int channel, int note) noexcept
         if (s.note != note || s.channel != channel || !s.keyDown)
             continue;
         s.keyDown = false;
-        if (sustainPedal_)
+        if (sustainPedal_ && s.stroke.phase() != BowStroke::Phase::Pluck)
             s.heldByPedal = true;
+        else if (parameters_.mapping == Mapping::Musical)
+            musicalNoteOff(s);
         else
             s.stroke.lift();
+    }
+}
+
+bool MidiGestureController::articulationKeyswitch(int note) noexcept
+{
+    switch (note)
+    {
+    case midimap::keyswitchDownBow:
+        nextDirection_ = 1.0;
+        return true;
+    case midimap::keyswitchUpBow:
+        nextDirection_ = -1.0;
+        return true;
+    case midimap::keyswitchArco:
+        articulationKeyswitch_ = static_cast<int>(Articulation::Arco);
+        return true;
+    case midimap::keyswitchPizzicato:
+        articulationKeyswitch_ = static_cast<int>(Articulation::Pizzicato);
+        return true;
+    case midimap::keyswitchTremolo:
+        tremoloKeyswitch_ = !tremoloKeyswitch_;
+        return true;
+    default:
+        return false;
     }
 }
 
@@ -221,6 +285,11 @@ void MidiGestureController::liftAll() noexcept
 void MidiGestureController::next(physics::BowInput* inputs) noexcept
 {
     ++sampleCounter_;
+    if (parameters_.mapping == Mapping::Musical)
+    {
+        musicalNext(inputs);
+        return;
+    }
     const auto& p = parameters_;
     for (int i = 0; i < count_; ++i)
     {

@@ -26,6 +26,12 @@
 // to the parameter ranges. Each string gets its own share of the bow force (setForceShares; the engine gives
 // shares in proportion to the strings' impedances, engine::bowForceShare).
 //
+// The musical mapping (GestureParameters::mapping; MusicalMapping.cpp, Resources/docs/playing.md): CC11/CC2
+// are dynamics along a DynamicsPath, CC20 and pressure the bow pressure inside each string's PlayableBand,
+// CC1 the vibrato depth (Vibrato.h; CC76 rate, CC78 delay), overlapping notes slur with a finger placed or
+// slid by the landing velocity (FingerGlide.h) or cross strings under a moving bow, CC17 or keyswitch A0
+// tremolo, keyswitches E0/F0 the next stroke's direction, G0/G#0 arco/pizzicato.
+//
 // Threading: prepare() on any non-audio thread; everything else on the audio thread, allocation-free.
 // Events apply at the sample they are handled: the caller handles an event whose sampleOffset is k just
 // before calling next() for sample k, which makes the output independent of the block size.
@@ -33,9 +39,13 @@
 #include <cstdint>
 
 #include "instrument/player/BowStroke.h"
+#include "instrument/player/DynamicsPath.h"
+#include "instrument/player/FingerGlide.h"
 #include "instrument/player/GestureEvent.h"
 #include "instrument/player/GestureParameters.h"
 #include "instrument/player/MidiChannels.h"
+#include "instrument/player/PlayableBand.h"
+#include "instrument/player/Vibrato.h"
 
 namespace rosin::player
 {
@@ -54,6 +64,11 @@ class MidiGestureController
     void setForceShares(const double* shares, int count) noexcept;
     /// The factor string s's bow force is multiplied by.
     double forceShare(int s) const noexcept { return forceShares_[static_cast<std::size_t>(s)]; }
+    /// Each prepared string's playable band, for the musical mapping; until set, invalid bands (the
+    /// classical curve's band of a generic string stands in).
+    void setBands(const PlayableBand* bands, int count) noexcept;
+    const PlayableBand& band(int s) const noexcept { return bands_[static_cast<std::size_t>(s)]; }
+    const DynamicsPath& dynamicsPath() const noexcept { return path_; }
     /// Every string at rest, controllers at their reset values, automatic string choice. Keeps the
     /// parameters, the MPE zone and the pitch-bend ranges (configuration a controller sends once).
     void reset() noexcept;
@@ -92,6 +107,15 @@ class MidiGestureController
     /// The MIDI channel of that note (its controllers drive the string).
     int channel(int s) const noexcept { return strings_[static_cast<std::size_t>(s)].channel; }
     bool sustainPedal() const noexcept { return sustainPedal_; }
+    /// String s's vibrato now, cents.
+    double vibratoCents(int s) const noexcept
+    {
+        return strings_[static_cast<std::size_t>(s)].vibrato.cents();
+    }
+    /// The articulation a note-on gets now (a keyswitch overrides the parameter).
+    Articulation articulation() const noexcept;
+    /// Tremolo switched on by keyswitch.
+    bool tremoloKeyswitch() const noexcept { return tremoloKeyswitch_; }
 
   private:
     struct StringState
@@ -104,6 +128,12 @@ class MidiGestureController
         double finger = 1.0;      // f_open / f_note
         double polyPressure = -1; // force factor; -1: none received for this note
         std::int64_t noteOnSample = 0;
+        // musical mapping
+        Vibrato vibrato;
+        FingerGlide glide;
+        bool gliding = false;
+        double rawPolyPressure = -1.0; // 0..1; -1: none received for this note
+        std::int64_t lastBowChange = 0;
     };
 
     static constexpr std::array<double, kMaxStrings> unitShares()
@@ -115,10 +145,29 @@ class MidiGestureController
     void noteOn(int channel, int note, int velocity) noexcept;
     void noteOff(int channel, int note) noexcept;
     void controller(int channel, int number, int value) noexcept;
+    bool articulationKeyswitch(int note) noexcept;
+    // MusicalMapping.cpp
+    void musicalNoteOn(int index, int channel, int note, int velocity) noexcept;
+    void musicalStart(StringState& s, int index, int channel, int velocity, double finger) noexcept;
+    bool slurAcross(int index, double finger) noexcept;
+    void musicalNoteOff(StringState& s) noexcept;
+    void musicalNext(physics::BowInput* inputs) noexcept;
+    void pluck(StringState& s, int index, int velocity, double finger) noexcept;
+    double musicalAcceleration(const PlayableBand& band, const MusicalBow& bow, int velocity,
+                               double finger) const noexcept;
+    MusicalBow musicalBowFor(int index, const ChannelControls& c) const noexcept;
+    static double accent(const MusicalBow& bow, int velocity) noexcept;
 
     std::array<StringState, kMaxStrings> strings_{};
     std::array<double, kMaxStrings> openFrequencies_{};
     std::array<double, kMaxStrings> forceShares_ = unitShares();
+    std::array<PlayableBand, kMaxStrings> bands_{};
+    DynamicsPath path_;
+    double sampleRate_ = 48000.0;
+    std::uint32_t noteSerial_ = 0;
+    double nextDirection_ = 0.0; // keyswitch: +1 down-bow, -1 up-bow next, 0 alternate
+    int articulationKeyswitch_ = -1;
+    bool tremoloKeyswitch_ = false;
     int count_ = 0;
     std::int64_t sampleCounter_ = 0; // samples since reset (chord window)
     std::int64_t chordWindowSamples_ = 1440;

@@ -277,6 +277,19 @@ void RosinProcessor::getStateInformation(juce::MemoryBlock& destData)
         copyXmlToBinary(*xml, destData);
 }
 
+void RosinProcessor::migrateState(juce::ValueTree& tree)
+{
+    // A state saved before the musical mapping existed played with the lab's: it keeps it, whatever the
+    // program a new instance starts with.
+    if (!tree.getChildWithProperty("id", engine::ids::mapping).isValid())
+    {
+        juce::ValueTree mapping("PARAM");
+        mapping.setProperty("id", engine::ids::mapping, nullptr);
+        mapping.setProperty("value", static_cast<int>(player::Mapping::Lab), nullptr);
+        tree.appendChild(mapping, nullptr);
+    }
+}
+
 void RosinProcessor::setStateInformation(const void* data, int sizeInBytes)
 {
     if (const auto problem = unparseableState(data, sizeInBytes))
@@ -290,9 +303,9 @@ void RosinProcessor::setStateInformation(const void* data, int sizeInBytes)
     juce::ValueTree tree = juce::ValueTree::fromXml(*xml);
     for (const auto& message : sanitiseParameterValues(tree, state_))
         std::cerr << "rosin: state: " << message << "\n";
-    // Version 1 is the only format so far; later versions migrate here before replaceState.
     if (static_cast<int>(tree.getProperty("stateVersion", 0)) > kStateVersion)
         std::cerr << "rosin: state from a newer version; reading what is known\n";
+    migrateState(tree);
     const int program = engine::findProgram(programs_, tree.getProperty("program").toString().toStdString());
     {
         std::lock_guard<std::mutex> lock(builderMutex_);

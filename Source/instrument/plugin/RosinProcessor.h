@@ -33,7 +33,8 @@ namespace rosin::plugin
 class RosinProcessor : public juce::AudioProcessor, private juce::Timer
 {
   public:
-    static constexpr int kStateVersion = 1;
+    /// 2: the musical mapping's parameters (a version 1 state gets the lab mapping, migrateState).
+    static constexpr int kStateVersion = 2;
 
     RosinProcessor();
     ~RosinProcessor() override;
@@ -91,6 +92,8 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     juce::MidiKeyboardState& keyboardState() noexcept { return keyboardState_; }
 
   private:
+    /// Brings a saved state of an older version up to this one, before replaceState.
+    static void migrateState(juce::ValueTree& tree);
     void timerCallback() override;
 
     juce::AudioProcessorValueTreeState state_;

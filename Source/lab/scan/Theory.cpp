@@ -12,22 +12,13 @@ namespace rosin::scan
 namespace
 {
 constexpr double kPi = std::numbers::pi;
-constexpr double kReferenceForce = 1.0; ///< N, where mu_s is read (force-independent for Coulomb contacts)
-constexpr double kClassicalDynamicToStatic = 0.35 / 1.2;
 constexpr int kHarmonics = 400; ///< [Notes §6.2] evaluates (6.5) with 400 harmonics
 constexpr int kTimeSteps = 2000;
 } // namespace
 
 FrictionLimits frictionLimits(const ModelSpec& model, double sampleRate)
 {
-    auto law = frictionLaw(model);
-    law->prepare(sampleRate);
-    law->reset();
-    FrictionLimits limits;
-    limits.muStatic = law->staticCoefficient(kReferenceForce);
-    const bool curve = model.friction == "classical" || model.friction == "reconstructed";
-    limits.muDynamic = curve ? 0.35 : kClassicalDynamicToStatic * limits.muStatic;
-    return limits;
+    return physics::frictionLimits(physics::frictionModelFromName(model.friction), model.contact, sampleRate);
 }
 
 double fminCoefficient(const std::function<std::complex<double>(double)>& admittance, double f0, double Z0,
@@ -56,20 +47,6 @@ double fminCoefficient(const std::function<std::complex<double>(double)>& admitt
 double stringLossConductance(const physics::StringParameters& string, int n)
 {
     return kPi * n * string.lossFactor(n, string.length, false) / (2.0 * string.impedance());
-}
-
-GuettlerWedge guettlerWedge(double beta, double ms, double md, double PZ0)
-{
-    const double scale = beta * (1.0 - beta) / PZ0;
-    GuettlerWedge w;
-    w.beta = beta;
-    w.lowerAccelerationPerNewton = scale * (3.0 * ms - md - 2.0 * std::sqrt(2.0 * ms * ms - ms * md));
-    w.upperAccelerationPerNewton =
-        scale *
-        ((3.0 - 4.0 * beta) * ms - md -
-         2.0 * std::sqrt((1.0 - 2.0 * beta) * (2.0 * (1.0 - beta) * ms * ms - ms * md))) /
-        (1.0 - 2.0 * beta);
-    return w;
 }
 
 Theory scanTheory(const ScanSpec& spec)

@@ -13,34 +13,22 @@
 //   -> Z0 Z_eff by Schelleng, less by simulation, [Notes §6.2]). Guettler's wedge a_low < a <= a_up, each
 //   proportional to F (eq. 6.6), with P Z0 = 2 x string mass.
 // Z0 = sqrt(T m) of the transverse string (torsion not folded in, as in the formulas of [Notes §6]).
-//
-// mu_s is the law's limiting static coefficient at 1 N, at ambient (FrictionLaw::staticCoefficient after
-// prepare). mu_d: the curve laws' limit at high sliding speed (0.35 for both, [Galluzzo2017] eqs. 1-2); the
-// thermal laws are calibrated so that steady sliding reproduces a curve, and we take the classical curve's
-// ratio mu_d/mu_s = 0.35/1.2 of their own mu_s (exact for plastic and viscous, calibrated on the classical
-// curve; an assumption for the modified laws, whose power-law steady curve has no finite limit).
+// mu_s and mu_d: physics::frictionLimits (core/physics/laws/FrictionLimits.h).
 #include <complex>
 #include <functional>
 #include <optional>
 #include <vector>
 
+#include "core/physics/laws/FrictionLimits.h"
+#include "core/physics/laws/GuettlerWedge.h"
 #include "lab/scan/ScanSpec.h"
 
 namespace rosin::scan
 {
 
-struct FrictionLimits
-{
-    double muStatic = 0.0;
-    double muDynamic = 0.0;
-};
+using physics::FrictionLimits;
 
-struct GuettlerWedge
-{
-    double beta = 0.0;
-    double lowerAccelerationPerNewton = 0.0; ///< m/s^2 per N
-    double upperAccelerationPerNewton = 0.0; ///< m/s^2 per N
-};
+using physics::GuettlerWedge;
 
 struct Theory
 {
@@ -64,8 +52,7 @@ double fminCoefficient(const std::function<std::complex<double>(double)>& admitt
 /// The string's own losses as a bridge conductance at harmonic n, G_n = pi n eta_n / (2 Z0), s/kg.
 double stringLossConductance(const physics::StringParameters& string, int n);
 
-/// Guettler's wedge at beta (eq. 6.6) for mu_s, mu_d and P Z0 (kg).
-GuettlerWedge guettlerWedge(double beta, double muStatic, double muDynamic, double periodTimesZ0);
+using physics::guettlerWedge; // eq. 6.6, core/physics/laws/GuettlerWedge.h
 
 /// Everything above for a scan (Schelleng: v_b = the scan's bow speed; Guettler: one wedge per beta, and the
 /// coefficients at v_b = 1 m/s).

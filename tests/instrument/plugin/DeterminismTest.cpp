@@ -79,7 +79,11 @@ TEST(PluginPrograms, EveryFactoryPresetIsAProgram)
     ASSERT_EQ(p.getNumPrograms(), static_cast<int>(names.size()));
     for (int i = 0; i < p.getNumPrograms(); ++i)
         EXPECT_EQ(p.getProgramName(i).toStdString(), names[static_cast<std::size_t>(i)]);
-    EXPECT_EQ(p.getProgramName(p.getCurrentProgram()), "cello-plastic");
+    EXPECT_EQ(p.getProgramName(p.getCurrentProgram()), engine::kDefaultProgramName);
+    // The default program plays with the musical mapping, a lab program with the lab's.
+    EXPECT_EQ(p.parameters().getParameter(engine::ids::mapping)->getCurrentValueAsText(), "musical");
+    p.setProgramByName("cello-plastic");
+    EXPECT_EQ(p.parameters().getParameter(engine::ids::mapping)->getCurrentValueAsText(), "lab");
     p.setProgramByName("schumacher-rig");
     EXPECT_EQ(p.parameters().getParameter(plugin::ids::instrument)->getCurrentValueAsText(), "violin");
     EXPECT_EQ(p.parameters().getParameter(plugin::ids::body)->getValue(), 0.0f);

@@ -1,0 +1,179 @@
+"""Judging rendered notes from the audio alone: MIDI files written for `rosin render --midi`, a pitch track,
+and the playability verdict of a note (clean = periodic at the note's period; playable = clean from at most
+150 ms after its onset to its end, at a median pitch within 25 cents of the note).
+
+Used by the acceptance tests beside it; runnable as a script to print the grid table of the manual's
+playing page (Resources/docs/playing.md, "How playable it is").
+"""
+import os
+import struct
+import subprocess
+import warnings
+import tempfile
+
+import numpy as np
+import scipy.io.wavfile
+
+TICKS = 480  # per quarter note; the tempo is 120 bpm, so a tick is 1/960 s
+
+
+def _varlen(n):
+    out = [n & 0x7F]
+    n >>= 7
+    while n:
+        out.insert(0, 0x80 | (n & 0x7F))
+        n >>= 7
+    return bytes(out)
+
+
+def write_midi(path, events):
+    """events: (seconds, status, data1, data2) in any order; written as one track at 120 bpm."""
+    events = sorted(events, key=lambda e: (e[0], 0 if (e[1] & 0xF0) in (0x80, 0xB0) else 1))
+    track = bytearray(b"\x00\xff\x51\x03\x07\xa1\x20")  # 500000 us per quarter
+    now = 0
+    for seconds, status, a, b in events:
+        tick = int(round(seconds * 2 * TICKS))
+        track += _varlen(tick - now) + bytes([status, a, b])
+        now = tick
+    track += b"\x00\xff\x2f\x00"
+    with open(path, "wb") as f:
+        f.write(b"MThd" + struct.pack(">IHHH", 6, 0, 1, TICKS))
+        f.write(b"MTrk" + struct.pack(">I", len(track)) + track)
+
+
+def note(start, length, pitch, velocity, channel=0):
+    return [(start, 0x90 | channel, pitch, velocity), (start + length, 0x80 | channel, pitch, 0)]
+
+
+def cc(seconds, number, value, channel=0):
+    return [(seconds, 0xB0 | channel, number, value)]
+
+
+def read_wav(path):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # rosin writes a chunk scipy does not know
+        rate, x = scipy.io.wavfile.read(path)
+    x = x.astype(float)
+    return (x if x.ndim == 1 else x[:, 0]), rate
+
+
+def render(rosin, events, preset=None, extra=(), tail=0.5):
+    """Renders `events` with `rosin render --midi` and returns (audio, sample rate)."""
+    with tempfile.TemporaryDirectory() as d:
+        mid, wav = os.path.join(d, "in.mid"), os.path.join(d, "out.wav")
+        write_midi(mid, events)
+        args = [rosin, "render", "--midi", mid, "--out", wav, "--tail", str(tail)]
+        if preset:
+            args += ["--preset", preset]
+        done = subprocess.run(args + list(extra), capture_output=True, text=True)
+        if done.returncode != 0:
+            raise RuntimeError("rosin render failed: " + done.stderr)
+        return read_wav(wav)
+
+
+def frequency(pitch):
+    return 440.0 * 2.0 ** ((pitch - 69) / 12.0)
+
+
+def periodicity(x, rate, f0, cents=60.0):
+    """(best normalised autocorrelation, its frequency) of frame x at lags within +-cents of 1/f0."""
+    x = x - x.mean()
+    lo = int(np.floor(rate / (f0 * 2 ** (cents / 1200))))
+    hi = int(np.ceil(rate / (f0 * 2 ** (-cents / 1200))))
+    n = len(x) - hi - 1
+    if n < lo or not np.any(x):
+        return 0.0, f0
+    a = x[:n]
+    ea = np.dot(a, a)
+    best, lag = -1.0, lo
+    scores = []
+    for k in range(lo - 1, hi + 2):
+        b = x[k:k + n]
+        s = np.dot(a, b) / np.sqrt(ea * np.dot(b, b) + 1e-30)
+        scores.append(s)
+    scores = np.array(scores)
+    i = int(np.argmax(scores[1:-1])) + 1
+    best = scores[i]
+    denom = scores[i - 1] - 2 * scores[i] + scores[i + 1]
+    shift = 0.5 * (scores[i - 1] - scores[i + 1]) / denom if denom < 0 else 0.0
+    lag = lo - 1 + i + shift
+    return float(best), rate / lag
+
+
+def pitch_track(x, rate, f0, start, end, hop=0.005, periods=2.2, cents=60.0):
+    """Times, frequencies and periodicity of frames from `start` to `end` seconds near f0. A frame holds
+    `periods` periods, so each period is compared with the next: vibrato (the pitch moves by at most a few
+    cents in a period) keeps a Helmholtz note periodic, a scratch is not."""
+    length = int(periods * rate / f0 * 2 ** (cents / 1200)) + 2
+    times, freqs, scores = [], [], []
+    t = start
+    while t + length / rate <= end:
+        i = int(t * rate)
+        s, f = periodicity(x[i:i + length], rate, f0, cents)
+        times.append(t + 0.5 * length / rate)
+        freqs.append(f)
+        scores.append(s)
+        t += hop
+    return np.array(times), np.array(freqs), np.array(scores)
+
+
+CLEAN = 0.9  # normalised autocorrelation at the period: Helmholtz motion scores > 0.97, a scratch < 0.8
+
+
+def judge(x, rate, pitch, onset, offset, settle=0.15):
+    """{'playable', 'clean_from' (s after onset, None if never), 'cents' (median)} of one note."""
+    f0 = frequency(pitch)
+    times, freqs, scores = pitch_track(x, rate, f0, onset, offset, hop=0.01)
+    if len(times) == 0:
+        return {"playable": False, "clean_from": None, "cents": float("nan")}
+    clean = scores > CLEAN
+    clean_from = None
+    for i in range(len(clean)):
+        if clean[i:].all():
+            clean_from = times[i] - onset
+            break
+    held = clean if clean.any() else np.ones_like(clean)
+    cents = float(np.median(1200 * np.log2(freqs[held] / f0)))
+    playable = clean_from is not None and clean_from <= settle and abs(cents) <= 25
+    return {"playable": playable, "clean_from": clean_from, "cents": cents}
+
+
+GRID_PITCHES = list(range(36, 68, 3))  # every minor third from C2 to G4: 11 notes
+GRID_VELOCITIES = (30, 64, 100, 127)
+NOTE_SECONDS = 0.8
+
+
+def judge_note(rosin, pitch, velocity, controllers=(), preset=None, extra=()):
+    """One detached note rendered on its own (a string left ringing by an earlier note would make the next
+    one aperiodic), after `controllers` ((number, value), ...) at t = 0."""
+    events = [e for number, value in controllers for e in cc(0.0, number, value)]
+    events += note(0.2, NOTE_SECONDS, pitch, velocity)
+    x, rate = render(rosin, events, preset, extra, tail=0.1)
+    return judge(x, rate, pitch, 0.2, 0.2 + NOTE_SECONDS)
+
+
+def judge_grid(rosin, controllers=(), preset=None, extra=(), jobs=2, pitches=GRID_PITCHES):
+    """The 44 detached notes with these controllers: list of (pitch, velocity, verdict)."""
+    from concurrent.futures import ThreadPoolExecutor
+    cases = [(p, v) for v in GRID_VELOCITIES for p in pitches]
+    with ThreadPoolExecutor(jobs) as pool:
+        verdicts = pool.map(lambda c: judge_note(rosin, c[0], c[1], controllers, preset, extra), cases)
+        return [(p, v, j) for (p, v), j in zip(cases, verdicts)]
+
+
+if __name__ == "__main__":
+    import sys
+    rosin = sys.argv[1]
+    settings = [(), ((11, 20),), ((11, 110),), ((1, 20),), ((1, 110),), ((1, 110), (11, 30)),
+                ((1, 30), (11, 30)), ((1, 100), (11, 100))]
+    if os.environ.get("ROSIN_SETTINGS") == "no-vibrato":
+        settings = [((1, 0),), ((1, 0), (11, 20)), ((1, 0), (11, 64)), ((1, 0), (11, 110))]
+    for controllers in settings:
+        preset = os.environ.get("ROSIN_PRESET")
+        lowest = int(os.environ.get("ROSIN_LOWEST", GRID_PITCHES[0]))
+        verdicts = judge_grid(rosin, controllers, preset=preset, extra=sys.argv[2:],
+                              pitches=[lowest + 3 * i for i in range(len(GRID_PITCHES))])
+        good = sum(1 for _, _, j in verdicts if j["playable"])
+        bad = ["%d/%d(%s,%+.0fc)" % (p, v, "-" if j["clean_from"] is None else "%.2f" % j["clean_from"],
+                                    j["cents"]) for p, v, j in verdicts if not j["playable"]]
+        print("%s: %d of %d playable; not: %s" % (" ".join("CC%d %d" % c for c in controllers) or "reset", good, len(verdicts), " ".join(bad)))
