@@ -37,6 +37,17 @@ ParameterControls::ParameterControls(juce::AudioProcessorValueTreeState& state) 
                                    "C"),
             1);
     addKnob(ids::outputLevel, "Output level", " dB", 1);
+
+    // The player: the mapping and the articulation, and the musical mapping's own controls.
+    addSelector(ids::mapping, "Mapping");
+    addSelector(ids::articulation, "Articulation");
+    addKnob(ids::dynamics, "Dynamics", "", 2);
+    addKnob(ids::bowPressure, "Bow pressure", "", 2);
+    addKnob(ids::vibratoDepth, "Vibrato depth", " cents", 1);
+    addKnob(ids::vibratoRate, "Vibrato rate", " Hz", 2);
+    addKnob(ids::vibratoDelay, "Vibrato delay", " s", 2);
+    addKnob(ids::slideTime, "Slide time", " s", 3);
+    addKnob(ids::tremoloRate, "Tremolo rate", " Hz", 1);
 }
 
 ParameterControls::~ParameterControls() = default;
@@ -83,10 +94,13 @@ void ParameterControls::resized()
     auto row = area.removeFromTop(kSelectorRowHeight);
     // Selector widths: label (attached on the left) + box. The first three share the top row with the body
     // and ear switches; the output choice, its DC blocker and the quality take the second.
-    const int labelWidths[] = {80, 56, 90, 60, 56};
-    const int boxWidths[] = {100, 80, 140, 130, 70};
+    // The third row: the player's mapping and articulation.
+    const int labelWidths[] = {80, 56, 90, 60, 56, 80, 90};
+    const int boxWidths[] = {100, 80, 140, 130, 70, 100, 110};
     for (std::size_t i = 0; i < selectors_.size(); ++i)
     {
+        if (i == kPlayerSelectorsFrom)
+            row = area.removeFromTop(kSelectorRowHeight);
         if (i == 3)
         {
             body_.setBounds(row.removeFromLeft(70));
@@ -101,14 +115,20 @@ void ParameterControls::resized()
     }
 
     area.removeFromTop(8);
-    const int n = static_cast<int>(knobs_.size());
-    const int width = area.getWidth() / juce::jmax(1, n);
-    for (auto& knob : knobs_)
+    // Two rows of knobs: the bow and the instrument, then the musical mapping's.
+    auto instrumentRow = area.removeFromTop(area.getHeight() / 2);
+    const auto layRow = [this](juce::Rectangle<int> r, std::size_t from, std::size_t to)
     {
-        auto cell = area.removeFromLeft(width).reduced(4, 0);
-        knob->label.setBounds(cell.removeFromTop(20));
-        knob->slider.setBounds(cell);
-    }
+        const int width = r.getWidth() / juce::jmax(1, static_cast<int>(to - from));
+        for (std::size_t i = from; i < to; ++i)
+        {
+            auto cell = r.removeFromLeft(width).reduced(4, 0);
+            knobs_[i]->label.setBounds(cell.removeFromTop(20));
+            knobs_[i]->slider.setBounds(cell);
+        }
+    };
+    layRow(instrumentRow, 0, kPlayerKnobsFrom);
+    layRow(area, kPlayerKnobsFrom, knobs_.size());
 }
 
 } // namespace rosin::plugin

@@ -24,6 +24,8 @@ class ParameterControls : public juce::Component
     static constexpr int kSecondRowWidth = 440;
 
   private:
+    static constexpr std::size_t kPlayerSelectorsFrom = 5; ///< mapping, articulation: the third row
+    static constexpr std::size_t kPlayerKnobsFrom = 6;     ///< the musical mapping's knobs: the second row
     struct Knob
     {
         juce::Slider slider;

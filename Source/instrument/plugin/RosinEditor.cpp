@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "instrument/player/DynamicsPath.h"
 #include "instrument/plugin/RosinProcessor.h"
 
 namespace rosin::plugin
@@ -10,7 +11,7 @@ namespace rosin::plugin
 namespace
 {
 constexpr int kHeaderHeight = 40;
-constexpr int kControlsHeight = 198; // two selector rows and the knobs
+constexpr int kControlsHeight = 346; // three selector rows and two rows of knobs
 constexpr int kKeyboardHeight = 60;
 constexpr int kLowestKey = 36, kHighestKey = 100; // cello C2 to the violin's E7
 const char* const kRoman[] = {"I", "II", "III", "IV", "V", "VI", "VII", "VIII"};
@@ -44,7 +45,7 @@ RosinEditor::RosinEditor(RosinProcessor& processor)
     clearResponse_.onClick = [this] { processor_.bodyResponse().clear(); };
     responseStatus_.setFont(juce::Font(12.0f));
     setResizable(true, true);
-    setResizeLimits(780, 570, 1600, 1100);
+    setResizeLimits(780, 718, 1600, 1250);
     setSize(kDefaultWidth, kDefaultHeight);
     refreshReadouts();
     startTimerHz(30);
@@ -173,7 +174,33 @@ void RosinEditor::refreshReadouts()
         state.beta = beta->load();
         state.force = force->load();
     }
+    addDynamicsPath(state, s >= 0 ? &readouts[static_cast<std::size_t>(s)] : nullptr);
     schelleng_.setState(state);
+}
+
+void RosinEditor::addDynamicsPath(SchellengDiagram::State& state, const StringReadout* readout) const
+{
+    const auto value = [this](const char* id)
+    { return processor_.parameters().getRawParameterValue(id)->load(); };
+    if (readout == nullptr || value(ids::mapping) < 0.5f || !(readout->impedance > 0.0f))
+        return;
+    // The string's band as the engine builds it (engine::playableBand), from what its telemetry reports.
+    player::PlayableBand band;
+    band.Z0 = readout->impedance;
+    band.conductance = readout->bridgeConductance;
+    band.muStatic = readout->muStatic > 0.0f ? readout->muStatic : 1.2;
+    band.muDynamic = band.muStatic * 0.35 / 1.2;
+    band.upperEdge = player::kMeasuredUpperEdge;
+    band.lowerEdge = player::kMeasuredLowerEdge;
+    const player::DynamicsPath path;
+    const int n = static_cast<int>(state.path.size());
+    for (int k = 0; k < n; ++k)
+    {
+        const auto bow = player::musicalBow(path, band, k / (n - 1.0), value(ids::bowPressure), 1.0);
+        state.path[static_cast<std::size_t>(k)] = {static_cast<float>(bow.beta),
+                                                   static_cast<float>(bow.bowForce)};
+    }
+    state.pathPoints = n;
 }
 
 } // namespace rosin::plugin

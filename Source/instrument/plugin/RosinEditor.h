@@ -21,7 +21,7 @@ class RosinProcessor;
 class RosinEditor : public juce::AudioProcessorEditor, private juce::Timer
 {
   public:
-    static constexpr int kDefaultWidth = 900, kDefaultHeight = 656;
+    static constexpr int kDefaultWidth = 900, kDefaultHeight = 804;
     static constexpr int kLanes = 4;
 
     explicit RosinEditor(RosinProcessor& processor);
@@ -35,6 +35,8 @@ class RosinEditor : public juce::AudioProcessorEditor, private juce::Timer
 
   private:
     void timerCallback() override { refreshReadouts(); }
+    /// The musical mapping's dynamics path for the sounding string (none with the lab mapping).
+    void addDynamicsPath(SchellengDiagram::State& state, const StringReadout* readout) const;
 
     RosinProcessor& processor_;
     ParameterControls controls_;

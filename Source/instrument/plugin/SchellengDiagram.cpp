@@ -152,6 +152,25 @@ void SchellengDiagram::paint(juce::Graphics& g)
         g.setColour(juce::Colour(0xff64b5f6));
         g.fillPath(dashed);
 
+        // The musical mapping's dynamics path, pp (small) to ff (large).
+        if (state_.pathPoints > 1)
+        {
+            juce::Path path;
+            for (int k = 0; k < state_.pathPoints; ++k)
+            {
+                const auto p = state_.path[static_cast<std::size_t>(k)];
+                const auto s = toScreen(plot, juce::jlimit(kBetaMin, kBetaMax, p.x),
+                                        juce::jlimit(kForceMin * 0.1f, kForceMax * 10.0f, p.y));
+                k == 0 ? path.startNewSubPath(s) : path.lineTo(s);
+                const float r =
+                    1.5f + 3.0f * static_cast<float>(k) / static_cast<float>(state_.pathPoints - 1);
+                g.setColour(juce::Colour(0xffffca28));
+                g.fillEllipse(s.x - r, s.y - r, 2.0f * r, 2.0f * r);
+            }
+            g.setColour(juce::Colour(0xffffca28).withAlpha(0.8f));
+            g.strokePath(path, juce::PathStrokeType(1.5f));
+        }
+
         // The trail, oldest faintest, then the current point.
         for (int k = 0; k < trailCount_; ++k)
         {
@@ -174,7 +193,8 @@ void SchellengDiagram::paint(juce::Graphics& g)
 
     // Legend.
     // Bottom right: large beta at low force, where the point seldom goes.
-    auto legend = plot.reduced(8.0f).removeFromBottom(34.0f).removeFromRight(150.0f);
+    auto legend =
+        plot.reduced(8.0f).removeFromBottom(state_.pathPoints > 1 ? 50.0f : 34.0f).removeFromRight(150.0f);
     g.setColour(background.darker(0.25f).withAlpha(0.85f));
     g.fillRect(legend.expanded(4.0f, 2.0f));
     g.setFont(juce::Font(11.5f));
@@ -189,6 +209,14 @@ void SchellengDiagram::paint(juce::Graphics& g)
     g.setColour(text);
     g.drawText("F_min (Schelleng)", legend.removeFromTop(16.0f).withTrimmedLeft(24.0f),
                juce::Justification::centredLeft);
+    if (state_.pathPoints > 1)
+    {
+        g.setColour(juce::Colour(0xffffca28));
+        g.fillEllipse(legend.getX() + 6.0f, legend.getY() + 4.0f, 7.0f, 7.0f);
+        g.setColour(text);
+        g.drawText("dynamics pp-ff", legend.removeFromTop(16.0f).withTrimmedLeft(24.0f),
+                   juce::Justification::centredLeft);
+    }
 }
 
 } // namespace rosin::plugin

@@ -3,9 +3,11 @@
 // the maximum bow force F_max = 2 Z0 v_b / (beta (mu_s - mu_d)) (solid), the minimum bow force
 // F_min = Z0^2 v_b G / (2 beta^2 (mu_s - mu_d)) (Schelleng's, with G the bridge conductance that stands for
 // the losses: RosinProcessor's schellengConductance; dashed), and the current (beta, force) point with a
-// short trail. mu_s is the law's static coefficient at the current force, mu_d the mean sliding coefficient
-// measured while slipping; without a measurement (or for laws without a static peak) the classical curve's
-// 1.2 - 0.35 stands in, and the difference is kept within 0.1..1.5 so the lines stay on the plot.
+// short trail, and with the musical mapping the dynamics path pp-ff the player follows inside the band
+// (player::DynamicsPath). mu_s is the law's static coefficient at the current force, mu_d the mean sliding
+// coefficient measured while slipping; without a measurement (or for laws without a static peak) the
+// classical curve's 1.2 - 0.35 stands in, and the difference is kept within 0.1..1.5 so the lines stay on the
+// plot.
 #include <array>
 
 #include <juce_gui_basics/juce_gui_basics.h>
@@ -32,6 +34,10 @@ class SchellengDiagram : public juce::Component
         float force = 1.0f;       ///< current point, N
         bool bowing = false;      ///< the point is live
         Regime regime = Regime::NoSlip;
+        /// The musical mapping's dynamics path for this string, pp to ff at the current bow pressure, as
+        /// (beta, force) points; none with the lab mapping.
+        std::array<juce::Point<float>, 11> path{};
+        int pathPoints = 0;
     };
 
     /// mu_s - mu_d as the diagram uses it (see above).
@@ -40,6 +46,7 @@ class SchellengDiagram : public juce::Component
     static float minimumForce(const State& s, float beta);
 
     void setState(const State& state);
+    const State& state() const noexcept { return state_; }
     void paint(juce::Graphics& g) override;
 
   private:
