@@ -1,8 +1,10 @@
-// Writes Resources/demo/phrase.mid, the demo phrase `rosin render --midi` plays (README, first command).
-// Build target rosin-make-demo-phrase; run it from the repository root to regenerate the committed file:
-//     ./build/rosin-make-demo-phrase Resources/demo/phrase.mid
+// Writes Resources/demo/phrase.mid, the lab's demo phrase (the golden renders and the programs' output
+// levels are measured on it), and Resources/demo/melody.mid, the melody the README's first command renders
+// with the default program's musical mapping. Build target rosin-make-demo-phrase; run it from the
+// repository root to regenerate the committed files:
+//     ./build/rosin-make-demo-phrase Resources/demo/phrase.mid Resources/demo/melody.mid
 //
-// An 8.4 s cello phrase in D minor, written for Rosin to show what the gesture controller does:
+// The phrase: an 8.4 s cello phrase in D minor, written for Rosin to show what the lab mapping does:
 //   0.0  D3 on the open D string, an expression (CC11) swell                     attack from rest
 //   1.4  F3 slurred from D3 (overlapping keys, same string)                       legato finger change
 //   2.2  A3 on the A string, a force (CC1) swell                                  new string, new stroke
@@ -52,10 +54,53 @@ struct Writer
 };
 } // namespace
 
+bool write(const Writer& w, const juce::File& out)
+{
+    juce::MidiFile file;
+    file.setTicksPerQuarterNote(kTicksPerQuarter);
+    file.addTrack(w.track);
+    out.deleteFile();
+    juce::FileOutputStream stream(out);
+    if (!stream.openedOk() || !file.writeTo(stream))
+    {
+        std::fprintf(stderr, "error: cannot write %s\n", out.getFullPathName().toRawUTF8());
+        return false;
+    }
+    std::printf("wrote %s: %d events\n", out.getFullPathName().toRawUTF8(), w.track.getNumEvents());
+    return true;
+}
+
+// A 9 s cello melody in D minor for the musical mapping (the default program, cello-solo):
+//   0.0  F3 on the D string, a crescendo (CC11 40 -> 90) and the vibrato growing (CC1 0 -> 80)
+//   1.6  G3 slurred (overlapping keys): a finger placed (velocity 100)
+//   2.4  A3 slurred: the open A string, reached by a string crossing under the moving bow
+//   3.2  D4 slurred at velocity 30, on the A string: an audible shift, a slide of 250 ms
+//   4.8  C#4 slurred, placed; 5.6 D4 on a new bow, a diminuendo (CC11 90 -> 30) that rings out
+Writer melody()
+{
+    Writer w;
+    w.add(juce::MidiMessage::tempoMetaEvent(static_cast<int>(1e6 / kBeatsPerSecond)), 0.0);
+    w.add(juce::MidiMessage::textMetaEvent(3, "Rosin demo melody (cello, musical mapping)"), 0.0);
+    w.add(juce::MidiMessage::controllerEvent(1, 11, 40), 0.0);
+    w.add(juce::MidiMessage::controllerEvent(1, 1, 0), 0.0);
+    w.ramp(11, 40, 90, 0.0, 2.4);
+    w.ramp(1, 0, 80, 0.4, 1.6);
+    w.note(53, 80, 0.0, 1.65);  // F3
+    w.note(55, 100, 1.6, 2.45); // G3, placed
+    w.note(57, 100, 2.4, 3.25); // A3, open A string
+    w.note(62, 30, 3.2, 4.85);  // D4, a slide
+    w.note(61, 100, 4.8, 5.6);  // C#4, placed
+    w.note(62, 90, 5.6, 8.0);   // D4, new bow
+    w.ramp(11, 90, 30, 5.8, 7.9);
+    w.track.updateMatchedPairs();
+    return w;
+}
+
 int main(int argc, char* argv[])
 {
-    const juce::File out = juce::File::getCurrentWorkingDirectory().getChildFile(
-        argc > 1 ? argv[1] : "Resources/demo/phrase.mid");
+    const auto cwd = juce::File::getCurrentWorkingDirectory();
+    const juce::File out = cwd.getChildFile(argc > 1 ? argv[1] : "Resources/demo/phrase.mid");
+    const juce::File melodyOut = cwd.getChildFile(argc > 2 ? argv[2] : "Resources/demo/melody.mid");
     Writer w;
     w.add(juce::MidiMessage::tempoMetaEvent(static_cast<int>(1e6 / kBeatsPerSecond)), 0.0);
     w.add(juce::MidiMessage::textMetaEvent(3, "Rosin demo phrase (cello)"), 0.0);
@@ -79,17 +124,5 @@ int main(int argc, char* argv[])
     w.ramp(11, 96, 40, 7.2, 8.3);
     w.ramp(1, 72, 56, 7.2, 8.3);
     w.track.updateMatchedPairs();
-
-    juce::MidiFile file;
-    file.setTicksPerQuarterNote(kTicksPerQuarter);
-    file.addTrack(w.track);
-    out.deleteFile();
-    juce::FileOutputStream stream(out);
-    if (!stream.openedOk() || !file.writeTo(stream))
-    {
-        std::fprintf(stderr, "error: cannot write %s\n", out.getFullPathName().toRawUTF8());
-        return 1;
-    }
-    std::printf("wrote %s: %d events\n", out.getFullPathName().toRawUTF8(), w.track.getNumEvents());
-    return 0;
+    return write(w, out) && write(melody(), melodyOut) ? 0 : 1;
 }

@@ -37,7 +37,7 @@ struct DynamicsPath
 /// What the musical mapping asks of one string now.
 /// The force range of the musical mapping, N: from a violin's lightest pp (below the host parameter's 0.05
 /// N) to a cellist's ff near the bridge on the C string.
-inline constexpr double kMusicalForceMin = 0.005, kMusicalForceMax = 8.0;
+inline constexpr double kMusicalForceMin = 0.05, kMusicalForceMax = 8.0;
 
 struct MusicalBow
 {

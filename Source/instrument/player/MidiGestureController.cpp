@@ -68,6 +68,7 @@ void MidiGestureController::reset() noexcept
         s.vibrato.reset();
         s.glide.reset();
         s.gliding = false;
+        s.bowValid = false;
     }
     channels_.resetControllers();
     keyswitchString_ = -1;

@@ -134,6 +134,8 @@ class MidiGestureController
         bool gliding = false;
         double rawPolyPressure = -1.0; // 0..1; -1: none received for this note
         std::int64_t lastBowChange = 0;
+        MusicalBow bow;        // the musical bow, recomputed at a control rate
+        bool bowValid = false; // false: recompute at the next sample
     };
 
     static constexpr std::array<double, kMaxStrings> unitShares()

@@ -33,7 +33,9 @@ constexpr double kPluckMinMetres = 0.001, kPluckMaxMetres = 0.004;
 constexpr double kDampingForce = 0.1;
 /// Tremolo bow changes: from +v_b to -v_b in a quarter of a stroke (2 v_b / a = 2 share / rate).
 constexpr double kTremoloReversalShare = 0.125;
-constexpr double kOpenString = 0.999; // finger ratio at or above: open, no vibrato
+constexpr double kOpenString = 0.999;
+/// Samples between recomputations of the musical bow (pow and log per string).
+constexpr std::int64_t kControlInterval = 32; // finger ratio at or above: open, no vibrato
 } // namespace
 
 double MidiGestureController::musicalAcceleration(const PlayableBand& band, const MusicalBow& bow,
@@ -100,6 +102,7 @@ void MidiGestureController::musicalNoteOn(int index, int channel, int note, int 
     s.heldByPedal = false;
     s.polyPressure = s.rawPolyPressure = -1.0;
     s.noteOnSample = sampleCounter_;
+    s.bowValid = false;
 }
 
 void MidiGestureController::musicalStart(StringState& s, int index, int channel, int velocity,
@@ -188,7 +191,14 @@ void MidiGestureController::musicalNext(physics::BowInput* inputs) noexcept
     {
         auto& s = strings_[static_cast<std::size_t>(i)];
         const ChannelControls c = channels_.controls(s.channel);
-        const MusicalBow bow = musicalBowFor(i, c);
+        // The bow follows its controls at a control rate (the stroke's 3 ms smoothers take the steps out);
+        // the counter is the controller's own, so the result does not depend on the host's blocks.
+        if (sampleCounter_ % kControlInterval == 1 || !s.bowValid)
+        {
+            s.bow = musicalBowFor(i, c);
+            s.bowValid = true;
+        }
+        const MusicalBow& bow = s.bow;
         const double depth = c.vibrato >= 0.0 ? c.vibrato * ranges::vibratoDepth.max : p.vibratoDepth;
         const double nominal = s.gliding ? s.glide.next() : s.finger;
         s.gliding = s.gliding && s.glide.gliding();

@@ -9,7 +9,7 @@ program, judged from the rendered audio alone (audio_judge.py).
   body's resonances (a sawtooth with the same vibrato stays periodic; the manual's playing page gives the
   figures), which no periodicity judge separates from a scratch.
 - CC11 20 to 127 on a sustained E3 (stopped on the D string): the radiated level rises step by step by at
-  least 25 dB, and the sound brightens: harmonics 6-40 gain on harmonics 1-3 by at least 5 dB from pp to ff
+  least 25 dB, and the sound brightens: harmonics 6-40 gain on harmonics 1-3 by at least 3 dB from pp to ff
   with mf between, and the spectral centroid ends higher than it starts.
 - Vibrato: rate and depth from the pitch track within 10 % of the set ones, its onset after the set delay,
   none on an open string.
@@ -95,7 +95,7 @@ class Dynamics(unittest.TestCase):
                                    np.round(shares, 1).tolist(), np.round(centroids).tolist()))
         self.assertTrue(all(b > a + 1.0 for a, b in zip(levels, levels[1:])), levels)
         self.assertGreaterEqual(levels[-1] - levels[0], 25.0)
-        self.assertGreaterEqual(shares[-1] - shares[0], 5.0)
+        self.assertGreaterEqual(shares[-1] - shares[0], 3.0)
         self.assertTrue(shares[0] < shares[2] < shares[-1], shares)
         self.assertGreater(centroids[-1], centroids[0])
 

@@ -61,6 +61,33 @@ TEST(PluginState, SaveAndRestoreGivesAnIdenticalNextRender)
     EXPECT_NE(renderDemo("", 48000.0, 512, 0.5).audio, a.audio);
 }
 
+// A project saved before the musical mapping existed has no "mapping" in its state: it keeps playing with
+// the lab mapping it was made with, although a new instance starts with the musical default program.
+TEST(PluginState, AStateSavedWithoutAMappingKeepsTheLabMapping)
+{
+    plugin::RosinProcessor before;
+    before.setProgramByName("cello-plastic");
+    juce::MemoryBlock saved;
+    before.getStateInformation(saved);
+    auto xml = juce::AudioProcessor::getXmlFromBinary(saved.getData(), static_cast<int>(saved.getSize()));
+    ASSERT_NE(xml, nullptr);
+    for (auto* child = xml->getFirstChildElement(); child != nullptr;)
+    {
+        auto* next = child->getNextElement();
+        if (child->getStringAttribute("id") == plugin::ids::mapping)
+            xml->removeChildElement(child, true);
+        child = next;
+    }
+    xml->setAttribute("stateVersion", 1);
+    juce::MemoryBlock old;
+    juce::AudioProcessor::copyXmlToBinary(*xml, old);
+
+    plugin::RosinProcessor restored;
+    ASSERT_EQ(restored.parameters().getParameter(plugin::ids::mapping)->getCurrentValueAsText(), "musical");
+    restored.setStateInformation(old.getData(), static_cast<int>(old.getSize()));
+    EXPECT_EQ(restored.parameters().getParameter(plugin::ids::mapping)->getCurrentValueAsText(), "lab");
+}
+
 TEST(PluginState, RejectsForeignDataWithoutChangingAnything)
 {
     plugin::RosinProcessor p;
