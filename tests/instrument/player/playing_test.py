@@ -15,6 +15,8 @@ program, judged from the rendered audio alone (audio_judge.py).
   none on an open string.
 - A slur at velocity 30 glides (pitch monotonic, 5-95 % of the interval in 150-300 ms); at 120 it lands
   within 30 ms.
+- Pizzicato (the cello-pizzicato program): a stopped note dies when its key is released, an open string
+  rings on; the pluck's peak stays within 15 dB of the ringing note's rms.
 
 Usage: playing_test.py ROSIN
 """
@@ -155,6 +157,26 @@ class Slur(unittest.TestCase):
         _, land, _ = self.glide(120)
         print("[ figures  ] slur at velocity 120: on the note %.0f ms after the note-on" % ((land - 1.0) * 1000))
         self.assertLessEqual(land - 1.0, 0.03)
+
+
+class Pizzicato(unittest.TestCase):
+    def pluck(self, pitch):
+        x, rate = judge.render(ROSIN, judge.note(0.2, 0.6, pitch, 90), preset="cello-pizzicato", tail=1.5)
+        level = lambda t: 20 * np.log10(np.sqrt(np.mean(x[int(t * rate):int((t + 0.05) * rate)] ** 2)) + 1e-12)
+        crest = 20 * np.log10(np.abs(x[int(0.2 * rate):int(0.25 * rate)]).max() /
+                              np.sqrt(np.mean(x[int(0.25 * rate):int(0.45 * rate)] ** 2)))
+        t, f, _ = judge.pitch_track(x, rate, judge.frequency(pitch), 0.25, 0.7, hop=0.01)
+        cents = float(np.median(1200 * np.log2(f / judge.frequency(pitch))))
+        return level(0.75) - level(1.2), crest, cents
+
+    def test_a_stopped_note_dies_at_note_off_an_open_one_rings(self):
+        stopped, stoppedCrest, stoppedCents = self.pluck(E3)
+        open_, openCrest, openCents = self.pluck(D3)
+        print("[ figures  ] pizzicato: after note-off E3 (stopped) falls %.1f dB in 0.45 s, D3 (open) %.1f dB; "
+              "peak over rms %.1f / %.1f dB; pitch %+.1f / %+.1f cents" % (
+                  stopped, open_, stoppedCrest, openCrest, stoppedCents, openCents))
+        self.assertGreater(stopped - open_, 15.0)
+        self.assertLess(max(stoppedCrest, openCrest), 15.0)
 
 
 if __name__ == "__main__":
