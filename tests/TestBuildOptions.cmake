@@ -20,14 +20,15 @@ endfunction()
 # discover runs, the grid sweeps, whole-plugin renders) get the label `<label>-slow` instead: the edit loop
 # (`ctest --preset dev`, which leaves out -L slow) then runs in about a minute, while `-L <label>`, a regular
 # expression, still selects them (a list of labels does not survive gtest_discover_tests's PROPERTIES).
-# Further arguments are test properties for all of them.
+# They also start first (COST): on two cores the long ones then run side by side from the start instead of
+# trailing one after the other at the end. Further arguments are test properties for all of them.
 function(rosin_discover_tests target label)
     cmake_parse_arguments(ARG "" "SLOW" "" ${ARGN})
     if(ARG_SLOW)
         gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 TEST_FILTER "-${ARG_SLOW}"
                              PROPERTIES LABELS ${label} ${ARG_UNPARSED_ARGUMENTS})
         gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 TEST_FILTER "${ARG_SLOW}"
-                             PROPERTIES LABELS ${label}-slow ${ARG_UNPARSED_ARGUMENTS})
+                             PROPERTIES LABELS ${label}-slow COST 1000 ${ARG_UNPARSED_ARGUMENTS})
     else()
         gtest_discover_tests(${target} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS ${label} ${ARG_UNPARSED_ARGUMENTS})
     endif()
