@@ -166,8 +166,7 @@ void MidiGestureController::pluck(StringState& s, int index, int velocity, doubl
     const double beta = pluckBeta(finger);
     const double pull = 2.0 * z0 * vibratingFrequency * (1.0 / beta + 1.0 / (1.0 - beta)) * metres;
     const double grip = std::clamp(2.0 * pull / mu, ranges::bowForce.min, kMusicalForceMax);
-    const double direction = s.stroke.strokesFromRest() % 2 == 0 ? 1.0 : -1.0;
-    s.stroke.pluck(direction * metres / kPluckSeconds, grip, kPluckSeconds, finger);
+    s.stroke.pluck(metres / kPluckSeconds, grip, kPluckSeconds, finger);
     s.glide.reset();
     s.gliding = false;
     s.vibrato.stop(); // a plucked note rings with the finger still; vibrato after a pluck is rare

@@ -182,16 +182,18 @@ void RosinEditor::addDynamicsPath(SchellengDiagram::State& state, const StringRe
 {
     const auto value = [this](const char* id)
     { return processor_.parameters().getRawParameterValue(id)->load(); };
-    if (readout == nullptr || value(ids::mapping) < 0.5f || !(readout->impedance > 0.0f))
+    if (readout == nullptr || value(ids::mapping) < 0.5f)
         return;
-    // The string's band as the engine builds it (engine::playableBand), from what its telemetry reports.
+    // The string's band as the engine built it (engine::playableBand), from what its telemetry reports.
     player::PlayableBand band;
     band.Z0 = readout->impedance;
     band.conductance = readout->bridgeConductance;
-    band.muStatic = readout->muStatic > 0.0f ? readout->muStatic : 1.2;
-    band.muDynamic = band.muStatic * 0.35 / 1.2;
+    band.muStatic = readout->bandMuStatic;
+    band.muDynamic = readout->bandMuDynamic;
     band.upperEdge = player::kMeasuredUpperEdge;
     band.lowerEdge = player::kMeasuredLowerEdge;
+    if (!band.valid())
+        return;
     const player::DynamicsPath path;
     const int n = static_cast<int>(state.path.size());
     for (int k = 0; k < n; ++k)

@@ -206,12 +206,16 @@ void RosinProcessor::publishIdleTelemetry()
     const engine::ParameterSnapshot snapshot = reader_.read(static_cast<int>(config.strings.size()));
     auto law = physics::makeFrictionLaw(config.friction, config.contact);
     law->prepare(sampleRate_);
+    const auto limits = physics::frictionLimits(config.friction, config.contact, sampleRate_);
     const int strings = std::min(static_cast<int>(config.strings.size()), Telemetry::kMaxStrings);
     telemetry_.stringCount.store(strings, std::memory_order_relaxed);
     for (int s = 0; s < strings; ++s)
     {
         const auto k = static_cast<std::size_t>(s);
         StringReadout r;
+        const player::PlayableBand band = engine::playableBand(config, k, limits);
+        r.bandMuStatic = static_cast<float>(band.muStatic);
+        r.bandMuDynamic = static_cast<float>(band.muDynamic);
         r.openFrequency = r.frequency = static_cast<float>(config.strings[k].fundamental());
         r.impedance = static_cast<float>(config.strings[k].impedance());
         r.bridgeConductance = static_cast<float>(engine::schellengConductance(config, k));
@@ -251,6 +255,8 @@ void RosinProcessor::publishTelemetry(const engine::Engine& engine) noexcept
         r.impedance = static_cast<float>(engine.impedances[k]);
         r.bridgeConductance = static_cast<float>(engine.bridgeConductances[k]);
         r.muStatic = static_cast<float>(engine.instrument.voice(s).friction().staticCoefficient(in.bowForce));
+        r.bandMuStatic = static_cast<float>(engine.bands[k].muStatic);
+        r.bandMuDynamic = static_cast<float>(engine.bands[k].muDynamic);
         r.sticking = out.sticking;
         r.bowing = in.bowForce > 1e-3 && std::abs(in.bowVelocity) > 1e-4;
         telemetry_.strings[k].publish(r);

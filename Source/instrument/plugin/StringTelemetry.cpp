@@ -46,6 +46,8 @@ void StringTelemetry::publish(const StringReadout& r) noexcept
     values_[kConductance].store(r.bridgeConductance, relaxed);
     values_[kMuStatic].store(r.muStatic, relaxed);
     values_[kMuSlip].store(r.muSlip, relaxed);
+    values_[kBandMuStatic].store(r.bandMuStatic, relaxed);
+    values_[kBandMuDynamic].store(r.bandMuDynamic, relaxed);
     sticking_.store(r.sticking, relaxed);
     bowing_.store(r.bowing, relaxed);
     regime_.store(static_cast<int>(r.regime), relaxed);
@@ -69,6 +71,8 @@ StringReadout StringTelemetry::read() const noexcept
     r.bridgeConductance = values_[kConductance].load(relaxed);
     r.muStatic = values_[kMuStatic].load(relaxed);
     r.muSlip = values_[kMuSlip].load(relaxed);
+    r.bandMuStatic = values_[kBandMuStatic].load(relaxed);
+    r.bandMuDynamic = values_[kBandMuDynamic].load(relaxed);
     r.sticking = sticking_.load(relaxed);
     r.bowing = bowing_.load(relaxed);
     const int regime = regime_.load(relaxed);

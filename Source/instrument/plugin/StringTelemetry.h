@@ -33,6 +33,8 @@ struct StringReadout
     float bridgeConductance = 0.0f; ///< mean real bridge admittance plus string losses, s/kg
     float muStatic = 0.0f;          ///< friction law's static coefficient at the current force
     float muSlip = 0.0f;            ///< mean |f| / F_b while slipping (0: no slip in the window)
+    float bandMuStatic = 0.0f;      ///< mu_s of the string's playable band (engine::playableBand)
+    float bandMuDynamic = 0.0f;     ///< mu_d of the string's playable band
     bool sticking = true;           ///< at the end of the block
     bool bowing = false;            ///< bow on the string and moving
     Regime regime = Regime::NoSlip; ///< meaningful while bowing
@@ -63,6 +65,8 @@ class StringTelemetry
         kConductance,
         kMuStatic,
         kMuSlip,
+        kBandMuStatic,
+        kBandMuDynamic,
         kFieldCount
     };
     std::array<std::atomic<float>, kFieldCount> values_{};

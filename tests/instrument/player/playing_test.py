@@ -5,9 +5,9 @@ program, judged from the rendered audio alone (audio_judge.py).
 - The grid of 44 detached notes (every minor third C2-G4 at velocities 30, 64, 100, 127) speaks within
   150 ms at a median pitch within 25 cents in at least 42 of 44 notes at each of CC11 20, 64, 110 (CC1 64)
   and CC1 20, 110 (CC11 64). Judged on the bridge force the render writes with --output force: the string's
-  own audio. The radiated sound of a vibrato note changes its shape from period to period through the
-  body's resonances (a sawtooth with the same vibrato stays periodic; the manual's playing page gives the
-  figures), which no periodicity judge separates from a scratch.
+  own audio, whose regime the grid asks about. The radiated sound is stricter (the jitter of a note's first
+  few hundred milliseconds in the harmonics the radiation lifts, and a vibrato's period-to-period changes
+  through the body's resonances); the manual's playing page gives its figures, 37-39 of 44.
 - CC11 20 to 127 on a sustained E3 (stopped on the D string): the radiated level rises step by step by at
   least 25 dB, and the sound brightens: harmonics 6-40 gain on harmonics 1-3 by at least 3 dB from pp to ff
   with mf between, and the spectral centroid ends higher than it starts.
