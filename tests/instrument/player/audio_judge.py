@@ -27,13 +27,14 @@ def _varlen(n):
 
 
 def write_midi(path, events):
-    """events: (seconds, status, data1, data2) in any order; written as one track at 120 bpm."""
-    events = sorted(events, key=lambda e: (e[0], 0 if (e[1] & 0xF0) in (0x80, 0xB0) else 1))
+    """events: (seconds, status, data1, data2) in any order (data2 None for a program change); written as
+    one track at 120 bpm."""
+    events = sorted(events, key=lambda e: (e[0], 0 if (e[1] & 0xF0) in (0x80, 0xB0, 0xC0) else 1))
     track = bytearray(b"\x00\xff\x51\x03\x07\xa1\x20")  # 500000 us per quarter
     now = 0
     for seconds, status, a, b in events:
         tick = int(round(seconds * 2 * TICKS))
-        track += _varlen(tick - now) + bytes([status, a, b])
+        track += _varlen(tick - now) + bytes([status, a] if b is None else [status, a, b])
         now = tick
     track += b"\x00\xff\x2f\x00"
     with open(path, "wb") as f:
@@ -68,6 +69,22 @@ def render(rosin, events, preset=None, extra=(), tail=0.5):
         done = subprocess.run(args + list(extra), capture_output=True, text=True)
         if done.returncode != 0:
             raise RuntimeError("rosin render failed: " + done.stderr)
+        return read_wav(wav)
+
+
+SOUNDFONT = "/usr/share/sounds/sf2/FluidR3_GM.sf2"  # Debian's fluid-soundfont-gm: sampled instruments
+
+
+def render_recording(events, program=42, rate=48000):
+    """Renders `events` with fluidsynth from the FluidR3 soundfont's General MIDI `program` (42: cello,
+    40: violin), reverb and chorus off: a recorded instrument judged by the same ear as Rosin."""
+    with tempfile.TemporaryDirectory() as d:
+        mid, wav = os.path.join(d, "in.mid"), os.path.join(d, "out.wav")
+        write_midi(mid, [(0.0, 0xC0, program, None)] + list(events))
+        done = subprocess.run(["fluidsynth", "-ni", "-q", "-R", "0", "-C", "0", "-r", str(rate), "-F", wav,
+                               SOUNDFONT, mid], capture_output=True, text=True)
+        if done.returncode != 0 or not os.path.exists(wav):
+            raise RuntimeError("fluidsynth failed: " + done.stderr)
         return read_wav(wav)
 
 
@@ -117,6 +134,28 @@ def pitch_track(x, rate, f0, start, end, hop=0.005, periods=2.2, cents=60.0):
     return np.array(times), np.array(freqs), np.array(scores)
 
 
+def low_partials_cents(x, rate, f0, start, end, partials=6):
+    """Pitch in cents against f0 from the frequencies of harmonics 1..partials between `start` and `end`
+    seconds, each f_n / n weighted by its amplitude. A stiff string's free partials are stretched (the
+    cello D3's 15th lies 11 cents sharp), and the ear takes the pitch of such a tone from its lower
+    harmonics (the dominance region, Ritsma 1967: harmonics 3-5), whereas an autocorrelation over two
+    periods is pulled sharp by the upper ones. A bowed note's partials are locked harmonic: there both agree."""
+    seg = x[int(start * rate):int(end * rate)]
+    seg = (seg - seg.mean()) * np.hanning(len(seg))
+    size = 1 << 20
+    spectrum = np.abs(np.fft.rfft(seg, size))
+    bin_hz = rate / size
+    weighted = weights = 0.0
+    for n in range(1, partials + 1):
+        lo, hi = int(n * f0 * 0.97 / bin_hz), int(n * f0 * 1.03 / bin_hz)
+        k = lo + int(np.argmax(spectrum[lo:hi]))
+        a, b, c = np.log(spectrum[k - 1:k + 2] + 1e-30)
+        fn = (k + 0.5 * (a - c) / (a - 2 * b + c)) * bin_hz
+        weighted += spectrum[k] * 1200 * np.log2(fn / (n * f0))
+        weights += spectrum[k]
+    return weighted / weights
+
+
 CLEAN = 0.9  # normalised autocorrelation at the period: Helmholtz motion scores > 0.97, a scratch < 0.8
 
 
@@ -143,12 +182,18 @@ GRID_VELOCITIES = (30, 64, 100, 127)
 NOTE_SECONDS = 0.8
 
 
+RECORDING = "--recording"  # in place of the rosin binary: the FluidR3 cello
+
+
 def judge_note(rosin, pitch, velocity, controllers=(), preset=None, extra=()):
     """One detached note rendered on its own (a string left ringing by an earlier note would make the next
     one aperiodic), after `controllers` ((number, value), ...) at t = 0."""
     events = [e for number, value in controllers for e in cc(0.0, number, value)]
     events += note(0.2, NOTE_SECONDS, pitch, velocity)
-    x, rate = render(rosin, events, preset, extra, tail=0.1)
+    if rosin == RECORDING:
+        x, rate = render_recording(events)
+    else:
+        x, rate = render(rosin, events, preset, extra, tail=0.1)
     return judge(x, rate, pitch, 0.2, 0.2 + NOTE_SECONDS)
 
 
@@ -162,12 +207,16 @@ def judge_grid(rosin, controllers=(), preset=None, extra=(), jobs=2, pitches=GRI
 
 
 if __name__ == "__main__":
+    # audio_judge.py ROSIN [render options]: the grid table; audio_judge.py --recording: the same judge on
+    # the FluidR3 cello's recording (one sample set per note, so every velocity plays the same).
     import sys
     rosin = sys.argv[1]
     settings = [(), ((11, 20),), ((11, 110),), ((1, 20),), ((1, 110),), ((1, 110), (11, 30)),
                 ((1, 30), (11, 30)), ((1, 100), (11, 100))]
     if os.environ.get("ROSIN_SETTINGS") == "no-vibrato":
         settings = [((1, 0),), ((1, 0), (11, 20)), ((1, 0), (11, 64)), ((1, 0), (11, 110))]
+    if rosin == RECORDING:
+        settings = [()]  # a sample player's CC1 and CC11 are not a bow
     for controllers in settings:
         preset = os.environ.get("ROSIN_PRESET")
         lowest = int(os.environ.get("ROSIN_LOWEST", GRID_PITCHES[0]))
