@@ -6,90 +6,14 @@ Used by the acceptance tests beside it; runnable as a script to print the grid t
 playing page (Resources/docs/playing.md, "How playable it is").
 """
 import os
-import struct
-import subprocess
-import warnings
-import tempfile
+import sys
 
 import numpy as np
-import scipy.io.wavfile
 
-TICKS = 480  # per quarter note; the tempo is 120 bpm, so a tick is 1/960 s
-
-
-def _varlen(n):
-    out = [n & 0x7F]
-    n >>= 7
-    while n:
-        out.insert(0, 0x80 | (n & 0x7F))
-        n >>= 7
-    return bytes(out)
-
-
-def write_midi(path, events):
-    """events: (seconds, status, data1, data2) in any order (data2 None for a program change); written as
-    one track at 120 bpm."""
-    events = sorted(events, key=lambda e: (e[0], 0 if (e[1] & 0xF0) in (0x80, 0xB0, 0xC0) else 1))
-    track = bytearray(b"\x00\xff\x51\x03\x07\xa1\x20")  # 500000 us per quarter
-    now = 0
-    for seconds, status, a, b in events:
-        tick = int(round(seconds * 2 * TICKS))
-        track += _varlen(tick - now) + bytes([status, a] if b is None else [status, a, b])
-        now = tick
-    track += b"\x00\xff\x2f\x00"
-    with open(path, "wb") as f:
-        f.write(b"MThd" + struct.pack(">IHHH", 6, 0, 1, TICKS))
-        f.write(b"MTrk" + struct.pack(">I", len(track)) + track)
-
-
-def note(start, length, pitch, velocity, channel=0):
-    return [(start, 0x90 | channel, pitch, velocity), (start + length, 0x80 | channel, pitch, 0)]
-
-
-def cc(seconds, number, value, channel=0):
-    return [(seconds, 0xB0 | channel, number, value)]
-
-
-def read_wav(path):
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")  # rosin writes a chunk scipy does not know
-        rate, x = scipy.io.wavfile.read(path)
-    x = x.astype(float)
-    return (x if x.ndim == 1 else x[:, 0]), rate
-
-
-def render(rosin, events, preset=None, extra=(), tail=0.5):
-    """Renders `events` with `rosin render --midi` and returns (audio, sample rate)."""
-    with tempfile.TemporaryDirectory() as d:
-        mid, wav = os.path.join(d, "in.mid"), os.path.join(d, "out.wav")
-        write_midi(mid, events)
-        args = [rosin, "render", "--midi", mid, "--out", wav, "--tail", str(tail)]
-        if preset:
-            args += ["--preset", preset]
-        done = subprocess.run(args + list(extra), capture_output=True, text=True)
-        if done.returncode != 0:
-            raise RuntimeError("rosin render failed: " + done.stderr)
-        return read_wav(wav)
-
-
-SOUNDFONT = "/usr/share/sounds/sf2/FluidR3_GM.sf2"  # Debian's fluid-soundfont-gm: sampled instruments
-
-
-def render_recording(events, program=42, rate=48000):
-    """Renders `events` with fluidsynth from the FluidR3 soundfont's General MIDI `program` (42: cello,
-    40: violin), reverb and chorus off: a recorded instrument judged by the same ear as Rosin."""
-    with tempfile.TemporaryDirectory() as d:
-        mid, wav = os.path.join(d, "in.mid"), os.path.join(d, "out.wav")
-        write_midi(mid, [(0.0, 0xC0, program, None)] + list(events))
-        done = subprocess.run(["fluidsynth", "-ni", "-q", "-R", "0", "-C", "0", "-r", str(rate), "-F", wav,
-                               SOUNDFONT, mid], capture_output=True, text=True)
-        if done.returncode != 0 or not os.path.exists(wav):
-            raise RuntimeError("fluidsynth failed: " + done.stderr)
-        return read_wav(wav)
-
-
-def frequency(pitch):
-    return 440.0 * 2.0 ** ((pitch - 69) / 12.0)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "Resources",
+                                "scripts"))
+from compare_sound import (cc, frequency, note, read_wav, render, render_recording,  # noqa: E402,F401
+                           write_midi)
 
 
 def periodicity(x, rate, f0, cents=60.0):
@@ -209,7 +133,6 @@ def judge_grid(rosin, controllers=(), preset=None, extra=(), jobs=2, pitches=GRI
 if __name__ == "__main__":
     # audio_judge.py ROSIN [render options]: the grid table; audio_judge.py --recording: the same judge on
     # the FluidR3 cello's recording (one sample set per note, so every velocity plays the same).
-    import sys
     rosin = sys.argv[1]
     settings = [(), ((11, 20),), ((11, 110),), ((1, 20),), ((1, 110),), ((1, 110), (11, 30)),
                 ((1, 30), (11, 30)), ((1, 100), (11, 100))]

@@ -19,9 +19,9 @@ program, judged from the rendered audio alone (audio_judge.py).
   rings on; the pluck's peak stays within 15 dB of the ringing note's rms. Its pitch 50-350 ms after the
   pluck, from the lower partials (audio_judge.low_partials_cents): the grid's median within 3 cents of the
   notes, every note within 15 (the bridge couples some partials to body modes and to the other strings: the
-  C2's third sits 31 cents sharp beside the G string's second). The issue asked for 5 cents by the
-  autocorrelation that judges bowed notes; a plucked stiff string's stretched partials pull that estimate
-  4-15 cents sharp on every note, at any velocity, so it is printed, not asserted.
+  C2's third sits 31 cents sharp beside the G string's second). By the two-period autocorrelation that
+  judges bowed notes, a plucked stiff string's stretched partials read 4-15 cents sharp on every note at
+  any velocity: that figure is printed, not asserted.
 
 Usage: playing_test.py ROSIN
 """
@@ -29,20 +29,10 @@ import os
 import sys
 import unittest
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
+import debian_python  # noqa: E402
 
-def _ensure_numpy():
-    """Debian's python3-numpy and python3-scipy are for /usr/bin/python3; CMake may find another python3."""
-    try:
-        import numpy  # noqa: F401
-        import scipy  # noqa: F401
-    except ImportError:
-        system = "/usr/bin/python3"
-        if os.path.exists(system) and os.path.realpath(sys.executable) != os.path.realpath(system):
-            os.execv(system, [system, os.path.abspath(__file__)] + sys.argv[1:])
-        raise
-
-
-_ensure_numpy()
+debian_python.ensure("numpy", "scipy")
 
 import numpy as np  # noqa: E402
 

@@ -10,18 +10,10 @@ import tempfile
 import unittest
 
 
-def _ensure_matplotlib():
-    """Debian's python3-matplotlib is for /usr/bin/python3; CMake may find another python3."""
-    try:
-        import matplotlib  # noqa: F401
-    except ImportError:
-        system = "/usr/bin/python3"
-        if os.path.exists(system) and os.path.realpath(sys.executable) != os.path.realpath(system):
-            os.execv(system, [system, os.path.abspath(__file__)] + sys.argv[1:])
-        raise
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
+import debian_python  # noqa: E402
 
-
-_ensure_matplotlib()
+debian_python.ensure("matplotlib")
 import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
