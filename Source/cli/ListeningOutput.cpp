@@ -4,6 +4,7 @@
 
 #include "core/config/ConfigError.h"
 #include "core/physics/body/BodyParameters.h"
+#include "core/physics/body/RadiationGains.h"
 #include "core/physics/voice/VoiceConfig.h"
 
 namespace rosin::cli
@@ -38,8 +39,9 @@ ListeningOutput::ListeningOutput(OutputQuantity quantity, const config::Preset& 
     : quantity_(quantity), bodyName_(listeningBodyName(preset))
 {
     const physics::VoiceConfig reference;
-    body_.configure(physics::bodyByName(bodyName_), sampleRate,
-                    2.0 * std::numbers::pi * reference.maxModeFrequencyRatio * sampleRate);
+    physics::BodyParameters body = physics::bodyByName(bodyName_);
+    physics::applyRadiationGains(body, preset.radiationGains);
+    body_.configure(body, sampleRate, 2.0 * std::numbers::pi * reference.maxModeFrequencyRatio * sampleRate);
 }
 
 double ListeningOutput::next(double bridgeForce) noexcept

@@ -12,6 +12,7 @@
 #include "cli/RenderCommand.h"
 #include "cli/WavWriter.h"
 #include "core/config/ConfigError.h"
+#include "core/config/PresetLoader.h"
 #include "instrument/engine/MidiInput.h"
 #include "instrument/engine/OfflineInstrument.h"
 
@@ -57,9 +58,9 @@ const OptionTable& midiOptionTable()
 {
     static const OptionTable table({
         {"--midi", "FILE.mid", "standard MIDI file; all tracks are merged (the manual's MIDI map)"},
-        {"--preset", "NAME",
+        {"--preset", "NAME|FILE.json",
          std::string("a factory program (default ") + engine::kDefaultProgramName +
-             "): one of the presets/ names"},
+             "): one of the presets/ names,\nor a program file (a preset; fit_body.py writes one)"},
         {"--automation", "FILE.json",
          "parameter lanes, \"format\": \"rosin-automation/1\" (the manual's\n"
          "rendering page)"},
@@ -167,10 +168,16 @@ void checkMidiRenderArguments(const std::vector<std::string>& args)
 
 namespace
 {
-/// The factory program of that name; ConfigError listing the programs if there is none.
-const engine::FactoryProgram& chooseProgram(const std::vector<engine::FactoryProgram>& programs,
-                                            const std::string& name)
+/// The factory program of that name, or the program file NAME.json (a preset file, such as fit_body.py
+/// writes); ConfigError listing the programs if there is none.
+engine::FactoryProgram chooseProgram(const std::vector<engine::FactoryProgram>& programs,
+                                     const std::string& name)
 {
+    if (name.size() > 5 && name.compare(name.size() - 5, 5, ".json") == 0)
+    {
+        const config::Preset preset = config::loadPreset(name);
+        return {preset.name, preset};
+    }
     std::string names;
     for (const engine::FactoryProgram& p : programs)
     {
@@ -178,7 +185,9 @@ const engine::FactoryProgram& chooseProgram(const std::vector<engine::FactoryPro
             return p;
         names += (names.empty() ? "" : ", ") + p.name;
     }
-    throw config::ConfigError("--preset", "", "a factory program (one of " + names + ")", "\"" + name + "\"");
+    throw config::ConfigError("--preset", "",
+                              "a factory program (one of " + names + ") or a program file NAME.json",
+                              "\"" + name + "\"");
 }
 
 juce::File fromWorkingDirectory(const std::string& path)
@@ -204,7 +213,10 @@ int runMidiRender(const std::vector<std::string>& args, std::ostream& out, std::
         automation = engine::loadAutomation(o.automation);
 
     engine::OfflineInstrument instrument;
-    instrument.setProgram(chooseProgram(engine::loadFactoryPrograms(), o.preset));
+    instrument.setProgram(chooseProgram(engine::loadFactoryPrograms(),
+                                        fromWorkingDirectory(o.preset).existsAsFile()
+                                            ? fromWorkingDirectory(o.preset).getFullPathName().toStdString()
+                                            : o.preset));
     if (!o.bodyResponse.empty())
     {
         try

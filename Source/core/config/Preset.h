@@ -5,7 +5,9 @@
 // below.
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "core/physics/body/RadiationGains.h"
 #include "core/physics/rig/OscillatorRigParameters.h"
 #include "core/physics/string/StringParameters.h"
 #include "core/physics/thermal/ContactParameters.h"
@@ -62,6 +64,9 @@ struct Preset
     /// The plugin's measured body response for this program (absolute path of a WAV file; the file may give
     /// it relative to its own folder): bridge force (N) to sound pressure (Pa). Absent: the modal body.
     std::optional<std::string> bodyResponse;
+    /// Gains on the body's radiated levels over frequency (RadiationGains.h; empty: the modelled body's): a
+    /// calibration to a recording, as Resources/scripts/fit_body.py writes it.
+    std::vector<physics::RadiationGainPoint> radiationGains;
     std::optional<RigPreset> rig;       ///< set: the rig is bowed instead of the string and body
     std::optional<PlayerPreset> player; ///< absent: the lab mapping (the lab programs)
 };

@@ -37,6 +37,8 @@ constexpr Range kReferenceForce{1e-3, 100.0, "N"};
 constexpr Range kLayerThickness{1e-9, 1e-3, "m"};
 constexpr Range kAmbientOffset{-50.0, 100.0, "K"};
 constexpr Range kOutputLevel{-60.0, 12.0, "dB"}; // the plugin's outputLevel parameter
+constexpr Range kGainFrequency{20.0, 20000.0, "Hz"};
+constexpr Range kGain{-30.0, 30.0, "dB"};
 constexpr Range kRigFrequency{1.0, 10000.0, "Hz"};
 constexpr Range kRigQ{0.6, 1e5, ""};
 constexpr Range kRigMass{1e-5, 100.0, "kg"};
@@ -180,6 +182,30 @@ Preset loadPreset(const std::string& nameOrPath)
 
 namespace
 {
+/// "radiationGains": [{"hz": 125, "db": 2.5}, ...], frequencies strictly ascending.
+void parseRadiationGains(const JsonObject& r, Preset& p)
+{
+    if (!r.has("radiationGains"))
+        return;
+    const auto& points = r.at("radiationGains");
+    if (!points.is_array() || points.empty())
+        r.fail("radiationGains", "a non-empty array of {\"hz\": ..., \"db\": ...} points",
+               describeJson(points));
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+        const std::string path = r.path("radiationGains") + "[" + std::to_string(i) + "]";
+        const JsonObject point(points[i], r.file(), path);
+        point.allowOnly({"hz", "db"});
+        physics::RadiationGainPoint g{point.number("hz", kGainFrequency), point.number("db", kGain)};
+        if (!p.radiationGains.empty() && !(g.frequencyHz > p.radiationGains.back().frequencyHz))
+            point.fail("hz",
+                       "a frequency above the previous point's " +
+                           std::to_string(p.radiationGains.back().frequencyHz) + " Hz",
+                       describeJson(points[i].at("hz")));
+        p.radiationGains.push_back(g);
+    }
+}
+
 void parsePlayer(const JsonObject& r, Preset& p)
 {
     if (!r.has("player"))
@@ -207,8 +233,8 @@ Preset parsePreset(const nlohmann::json& root, const std::string& file, const st
     requireFormat(root, file, "rosin-preset/1");
     const JsonObject r(root, file, "");
     r.allowOnly({"format", "name", "description", "string", "body", "friction", "contact", "torsion",
-                 "bendingStiffness", "ambientOffset", "beta", "outputLevel", "bodyResponse", "rig",
-                 "player"});
+                 "bendingStiffness", "ambientOffset", "beta", "outputLevel", "bodyResponse", "rig", "player",
+                 "radiationGains"});
 
     Preset p = defaultPreset();
     p.source = file;
@@ -242,6 +268,7 @@ Preset parsePreset(const nlohmann::json& root, const std::string& file, const st
     }
     parseRig(r, p);
     parsePlayer(r, p);
+    parseRadiationGains(r, p);
     return p;
 }
 

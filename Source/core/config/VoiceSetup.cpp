@@ -4,6 +4,7 @@
 
 #include "core/config/JsonObject.h"
 #include "core/physics/body/BodyParameters.h"
+#include "core/physics/body/RadiationGains.h"
 #include "core/physics/rig/CantileverContact.h"
 
 namespace rosin::config
@@ -45,6 +46,7 @@ VoiceSetup buildVoiceSetup(const Preset& preset)
     VoiceSetup setup;
     setup.voice.string = preset.string;
     setup.voice.body = physics::bodyByName(preset.body);
+    physics::applyRadiationGains(setup.voice.body, preset.radiationGains);
     setup.voice.torsion = preset.torsion;
     setup.voice.bendingStiffness = preset.bendingStiffness;
 

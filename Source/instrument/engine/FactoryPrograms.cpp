@@ -66,7 +66,9 @@ int findProgram(const std::vector<FactoryProgram>& programs, const std::string& 
 std::vector<std::pair<const char*, float>> programParameterValues(const config::Preset& preset)
 {
     auto values = instrumentParameterValues(preset);
-    const config::PlayerPreset player = preset.player.value_or(config::PlayerPreset{"lab"});
+    config::PlayerPreset lab;
+    lab.mapping = "lab";
+    const config::PlayerPreset player = preset.player.value_or(lab);
     const player::GestureParameters defaults{};
     values.emplace_back(ids::mapping, player.mapping == "musical" ? 1.0f : 0.0f);
     const auto add = [&](const char* id, std::optional<double> value, double fallback)

@@ -4,6 +4,7 @@
 
 #include "core/config/VoiceSetup.h"
 #include "core/physics/body/BodyParameters.h"
+#include "core/physics/body/RadiationGains.h"
 
 namespace rosin::engine
 {
@@ -34,6 +35,7 @@ physics::InstrumentConfig buildInstrumentConfig(const InstrumentKey& key, const 
                 best = d, nearest = i;
         }
         config.strings[nearest] = setup.voice.string;
+        physics::applyRadiationGains(config.body, extras.preset->radiationGains);
     }
     config.friction = key.friction;
     if (!key.body)

@@ -19,6 +19,9 @@ struct BodyMode
     double radiationEfficiency = 0.0;
     /// +1 or -1: the sign of the mode's net volume velocity relative to its bridge motion.
     double radiationSign = 1.0;
+    /// Factor on the mode's radiated pressure, 1 for the modelled body: a program's radiation gains
+    /// (RadiationGains.h), a calibration to one instrument's recording; the admittance does not change.
+    double radiationGain = 1.0;
 };
 
 /// What the body's radiation depends on besides its modes (BodyRadiation.h).

@@ -30,7 +30,7 @@ double pressurePerAcceleration(const BodyMode& mode, const BodyRadiation& radiat
                                std::sqrt(D * mode.radiationEfficiency * mode.effectiveMass /
                                          (4.0 * std::numbers::pi * radiation.surfaceDensity));
     const double compactness = std::hypot(1.0, mode.frequency / radiation.unityEfficiencyHz);
-    return mode.radiationSign * perVelocity * compactness / (kTwoPi * mode.frequency);
+    return mode.radiationGain * mode.radiationSign * perVelocity * compactness / (kTwoPi * mode.frequency);
 }
 
 double radiatedShare(const BodyMode& mode, const BodyRadiation& radiation) noexcept
