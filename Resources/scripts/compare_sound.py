@@ -162,11 +162,18 @@ def envelope_differences(a, b):
     return (a[kept] - a[kept].mean()) - (b[kept] - b[kept].mean()), kept
 
 
+def pooled_distance(pairs):
+    """The envelope distance (dB) over (ours, theirs) band-level pairs of several notes: the rms of every
+    kept band's difference; nan when there are none."""
+    pooled = [d for ours, theirs in pairs for d in envelope_differences(ours, theirs)[0]]
+    return float(np.sqrt(np.mean(np.square(pooled)))) if pooled else float("nan")
+
+
 def compare(rosin, pitches, preset=None, program=42, velocity=80, length=2.0, start=0.8, end=1.8,
             extra=(), soundfont=SOUNDFONT, keep_audio=False):
     """Per note: both sounds' measures and the envelope differences; and the overall distance (dB). The
     analysis runs from `start` to `end` seconds after the note-on."""
-    notes, pooled = [], []
+    notes = []
     start, end = start + ONSET, end + ONSET
     for pitch in pitches:
         events = note(ONSET, length, pitch, velocity)
@@ -178,13 +185,12 @@ def compare(rosin, pitches, preset=None, program=42, velocity=80, length=2.0, st
         f0 = frequency(pitch)
         ours, theirs = measures(x, rate, f0, start, end), measures(y, yrate, f0, start, end)
         differences, kept = envelope_differences(ours["bands"], theirs["bands"])
-        pooled.extend(differences)
         entry = {"pitch": pitch, "rosin": ours, "recording": theirs, "kept": kept,
                  "distance": float(np.sqrt(np.mean(differences ** 2)))}
         if keep_audio:
             entry["audio"] = (x, y, rate)
         notes.append(entry)
-    return notes, float(np.sqrt(np.mean(np.square(pooled))))
+    return notes, pooled_distance((n["rosin"]["bands"], n["recording"]["bands"]) for n in notes)
 
 
 def name_of(pitch):

@@ -77,10 +77,7 @@ def rosin_bands(args, pitches, preset_path):
 
 
 def distance(ours, theirs, pitches):
-    pooled = []
-    for pitch in pitches:
-        pooled.extend(cs.envelope_differences(ours[pitch], theirs[pitch])[0])
-    return float(np.sqrt(np.mean(np.square(pooled)))) if pooled else float("nan")
+    return cs.pooled_distance((ours[pitch], theirs[pitch]) for pitch in pitches)
 
 
 def step(ours, theirs, pitches):

@@ -213,10 +213,7 @@ int runMidiRender(const std::vector<std::string>& args, std::ostream& out, std::
         automation = engine::loadAutomation(o.automation);
 
     engine::OfflineInstrument instrument;
-    instrument.setProgram(chooseProgram(engine::loadFactoryPrograms(),
-                                        fromWorkingDirectory(o.preset).existsAsFile()
-                                            ? fromWorkingDirectory(o.preset).getFullPathName().toStdString()
-                                            : o.preset));
+    instrument.setProgram(chooseProgram(engine::loadFactoryPrograms(), o.preset));
     if (!o.bodyResponse.empty())
     {
         try
