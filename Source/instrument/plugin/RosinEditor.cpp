@@ -13,6 +13,7 @@ namespace
 constexpr int kHeaderHeight = 40;
 constexpr int kControlsHeight = 346; // three selector rows and two rows of knobs
 constexpr int kKeyboardHeight = 60;
+constexpr int kProgramButtonWidth = 110;
 constexpr int kLowestKey = 36, kHighestKey = 100; // cello C2 to the violin's E7
 const char* const kRoman[] = {"I", "II", "III", "IV", "V", "VI", "VII", "VIII"};
 } // namespace
@@ -43,6 +44,10 @@ RosinEditor::RosinEditor(RosinProcessor& processor)
         "pressure (Pa), used for the radiated sound");
     loadResponse_.onClick = [this] { chooseBodyResponse(); };
     clearResponse_.onClick = [this] { processor_.bodyResponse().clear(); };
+    addAndMakeVisible(loadProgram_);
+    loadProgram_.setTooltip("Play a program file (a preset in JSON, such as fit_body.py writes for your own "
+                            "instrument) until a factory program is chosen; it is saved with the project");
+    loadProgram_.onClick = [this] { chooseProgramFile(); };
     responseStatus_.setFont(juce::Font(12.0f));
     setResizable(true, true);
     setResizeLimits(780, 718, 1600, 1250);
@@ -67,13 +72,18 @@ void RosinEditor::paint(juce::Graphics& g)
     g.setColour(getLookAndFeel().findColour(juce::Label::textColourId).withAlpha(0.6f));
     g.drawText("physically modelled bowed string", header.withTrimmedLeft(86),
                juce::Justification::centredLeft);
-    const auto program = processor_.getProgramName(processor_.getCurrentProgram());
-    g.drawText("program: " + program, header, juce::Justification::centredRight);
+    g.drawText("program: " + processor_.programTitle(), header.withTrimmedRight(kProgramButtonWidth + 8),
+               juce::Justification::centredRight);
 }
 
 void RosinEditor::resized()
 {
     auto area = getLocalBounds().reduced(10, 0);
+    loadProgram_.setBounds(getLocalBounds()
+                               .removeFromTop(kHeaderHeight)
+                               .reduced(14, 0)
+                               .removeFromRight(kProgramButtonWidth)
+                               .reduced(0, 8));
     area.removeFromTop(kHeaderHeight);
     controls_.setBounds(area.removeFromTop(kControlsHeight));
     // Beside the output choice and the quality (the controls' second row): the body response's buttons and
@@ -110,8 +120,29 @@ void RosinEditor::chooseBodyResponse()
                           });
 }
 
+void RosinEditor::chooseProgramFile()
+{
+    chooser_ = std::make_unique<juce::FileChooser>("Program file (a Rosin preset)", juce::File(), "*.json");
+    chooser_->launchAsync(juce::FileBrowserComponent::openMode | juce::FileBrowserComponent::canSelectFiles,
+                          [this](const juce::FileChooser& chooser)
+                          {
+                              if (chooser.getResult() == juce::File())
+                                  return;
+                              if (!processor_.loadProgramFile(chooser.getResult()))
+                                  juce::AlertWindow::showMessageBoxAsync(
+                                      juce::MessageBoxIconType::WarningIcon, "Program file not loaded",
+                                      processor_.programFileStatus());
+                              repaint();
+                          });
+}
+
 void RosinEditor::refreshReadouts()
 {
+    if (const juce::String title = processor_.programTitle(); title != shownProgram_)
+    {
+        shownProgram_ = title; // a host's or a file's program change: the header names it
+        repaint(getLocalBounds().removeFromTop(kHeaderHeight));
+    }
     if (responseStatus_.getText() != processor_.bodyResponse().status())
     {
         responseStatus_.setText(processor_.bodyResponse().status(), juce::dontSendNotification);

@@ -46,8 +46,12 @@ class RosinEditor : public juce::AudioProcessorEditor, private juce::Timer
     // The measured body response: load (a file chooser), back to the modal body, and what is in use.
     juce::TextButton loadResponse_{"Body response..."}, clearResponse_{"Modal body"};
     juce::Label responseStatus_;
+    // A program from a file (a preset, such as fit_body.py writes for a player's own instrument).
+    juce::TextButton loadProgram_{"Program file..."};
     std::unique_ptr<juce::FileChooser> chooser_;
     void chooseBodyResponse();
+    void chooseProgramFile();
+    juce::String shownProgram_;
     int soundingString_ = -1; // index from the lowest; the diagram follows the last bowed string
 };
 

@@ -66,11 +66,16 @@ void RosinProcessor::setCurrentProgram(int index)
 {
     if (index < 0 || index >= getNumPrograms())
         return;
-    const config::Preset& preset = programs_[static_cast<std::size_t>(index)].preset;
+    applyProgram(index, programs_[static_cast<std::size_t>(index)].preset, std::nullopt);
+}
+
+void RosinProcessor::applyProgram(int index, const config::Preset& preset, std::optional<ProgramFile> file)
+{
     {
         std::lock_guard<std::mutex> lock(builderMutex_);
         currentProgram_ = index;
         extras_.preset = preset;
+        programFile_ = std::move(file);
         ++programGeneration_;
     }
     // The program's slow settings become parameter values, so a host sees and automates them.
@@ -82,6 +87,40 @@ void RosinProcessor::setCurrentProgram(int index)
         bodyResponse_.clear();
     if (!prepared_)
         publishIdleTelemetry();
+}
+
+bool RosinProcessor::loadProgramFile(const juce::File& file)
+{
+    auto read = readProgramFile(file);
+    if (auto* error = std::get_if<std::string>(&read))
+    {
+        std::lock_guard<std::mutex> lock(builderMutex_);
+        programFileStatus_ = *error;
+        return false;
+    }
+    ProgramFile program = std::get<ProgramFile>(std::move(read));
+    const config::Preset preset = program.preset;
+    {
+        std::lock_guard<std::mutex> lock(builderMutex_);
+        programFileStatus_ = "program " + juce::String(preset.name) + " from " + program.path;
+    }
+    applyProgram(currentProgram_, preset, std::move(program));
+    return true;
+}
+
+juce::String RosinProcessor::programFileStatus() const
+{
+    std::lock_guard<std::mutex> lock(builderMutex_);
+    return programFileStatus_;
+}
+
+juce::String RosinProcessor::programTitle() const
+{
+    std::lock_guard<std::mutex> lock(builderMutex_);
+    if (programFile_)
+        return juce::String(programFile_->preset.name) + " (" +
+               juce::File::createFileWithoutCheckingPath(programFile_->path).getFileName() + ")";
+    return programs_[static_cast<std::size_t>(currentProgram_)].name;
 }
 
 bool RosinProcessor::setProgramByName(const std::string& name)
@@ -278,6 +317,11 @@ void RosinProcessor::getStateInformation(juce::MemoryBlock& destData)
     juce::ValueTree tree = state_.copyState();
     tree.setProperty("stateVersion", kStateVersion, nullptr);
     tree.setProperty("program", getProgramName(currentProgram_), nullptr);
+    {
+        std::lock_guard<std::mutex> lock(builderMutex_);
+        if (programFile_)
+            saveProgramFile(*programFile_, tree);
+    }
     bodyResponse_.save(tree);
     if (auto xml = tree.createXml())
         copyXmlToBinary(*xml, destData);
@@ -313,10 +357,19 @@ void RosinProcessor::setStateInformation(const void* data, int sizeInBytes)
         std::cerr << "rosin: state from a newer version; reading what is known\n";
     migrateState(tree);
     const int program = engine::findProgram(programs_, tree.getProperty("program").toString().toStdString());
+    std::string problem;
+    std::optional<ProgramFile> file = restoreProgramFile(tree, problem);
+    if (!problem.empty())
+        std::cerr << "rosin: state: " << problem << "; playing program "
+                  << programs_[static_cast<std::size_t>(program)].name << "\n";
     {
         std::lock_guard<std::mutex> lock(builderMutex_);
         currentProgram_ = program;
-        extras_.preset = programs_[static_cast<std::size_t>(program)].preset;
+        extras_.preset = file ? file->preset : programs_[static_cast<std::size_t>(program)].preset;
+        programFileStatus_ =
+            file ? "program " + juce::String(file->preset.name) + ", the copy saved from " + file->path
+                 : juce::String(problem);
+        programFile_ = std::move(file);
         ++programGeneration_;
     }
     tree.removeProperty("stateVersion", nullptr);

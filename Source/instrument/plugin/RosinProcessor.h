@@ -14,6 +14,7 @@
 #include <array>
 #include <atomic>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 #include <juce_audio_processors/juce_audio_processors.h>
@@ -25,6 +26,7 @@
 #include "instrument/plugin/EngineSlot.h"
 #include "instrument/plugin/HostParameters.h"
 #include "instrument/plugin/KeyboardQueue.h"
+#include "instrument/plugin/ProgramFile.h"
 #include "instrument/plugin/StringTelemetry.h"
 
 namespace rosin::plugin
@@ -78,6 +80,14 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     void setParameterValue(const char* id, float value);
     /// Selects a program by preset name; false if there is none of that name.
     bool setProgramByName(const std::string& name);
+    /// Plays the program in `file` (a preset, such as fit_body.py writes) instead of a factory program, until
+    /// a factory program is selected; it is saved with the state. False, with the reason in
+    /// programFileStatus(), if the file cannot be used: the program playing stays.
+    bool loadProgramFile(const juce::File& file);
+    /// What the last program-file load did (for the editor); empty before any.
+    juce::String programFileStatus() const;
+    /// The program playing, as the editor shows it: a factory program's name, or a file's program and path.
+    juce::String programTitle() const;
     /// Voice resets after a runaway, and non-finite output samples, since prepareToPlay.
     int runawayResets() const noexcept { return runawayResets_.load(); }
     int nonFiniteSamples() const noexcept { return nonFiniteSamples_.load(); }
@@ -94,6 +104,8 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
   private:
     /// Brings a saved state of an older version up to this one, before replaceState.
     static void migrateState(juce::ValueTree& tree);
+    /// What every program change does: the preset becomes the builder's, its slow settings parameter values.
+    void applyProgram(int index, const config::Preset& preset, std::optional<ProgramFile> file);
     void timerCallback() override;
 
     juce::AudioProcessorValueTreeState state_;
@@ -102,9 +114,11 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     int currentProgram_ = 0;
 
     // Builder side, guarded by builderMutex_ (the audio thread never takes it).
-    std::mutex builderMutex_;
+    mutable std::mutex builderMutex_;
     engine::ProgramExtras extras_;
     int programGeneration_ = 0;
+    std::optional<ProgramFile> programFile_; ///< the program playing when it came from a file
+    juce::String programFileStatus_;
     engine::InstrumentKey lastBuiltKey_;
     int lastBuiltGeneration_ = -1;
     long nextSerial_ = 1;
