@@ -72,6 +72,8 @@ namespace
 {
 constexpr physics::Range kThreads{1.0, 1024.0, "", false, false, true};
 constexpr physics::Range kSeed{0.0, 9007199254740992.0, "", false, false, true};
+constexpr physics::Range kMaxEffectsRange{1.0, static_cast<double>(discovery::kMaxEffects), "", false, false,
+                                          true};
 
 const OptionTable& discoverOptionTable()
 {
@@ -82,6 +84,8 @@ const OptionTable& discoverOptionTable()
             {"--baseline", "LAW", "friction law of the baseline (default plastic)"},
             {"--threads", "N", "threads (default: every core)"},
             {"--seed", "S", "seed of the significance test's random sign flips (default 0)"},
+            {"--max-effects", "N",
+             "adopt at most N effects, 1 to 3 (default 3): 1 is a quicker first answer"},
             {"-h, --help", "", "this text"},
         },
         23);
@@ -105,7 +109,7 @@ scatter and the model's sensitivity to 2 % changes of the settings), fits each e
 training half (checkerboard over the grid) and adopts the one that removes the most held-out gap if
 significant (paired sign-flip test at 1 %, Bonferroni over the candidates, and a gain of at least 20 %;
 a candidate close to it is cross-fitted, fitted on each half and scored on the other); at most three
-effects.
+effects (--max-effects).
 )"},
         {"options", "", &discoverOptionTable()},
     };
@@ -164,6 +168,8 @@ int runDiscover(const std::vector<std::string>& args, std::ostream& out, std::os
     settings.threads = static_cast<unsigned>(
         options.number("--threads", kThreads, std::max(1u, std::thread::hardware_concurrency())));
     settings.seed = static_cast<std::uint64_t>(options.number("--seed", kSeed, 0.0));
+    settings.maxEffects = static_cast<std::size_t>(
+        options.number("--max-effects", kMaxEffectsRange, static_cast<double>(discovery::kMaxEffects)));
 
     const discovery::Dataset dataset = discovery::readDatasetDescription(folder);
     if (!dataset.channelIndex("bridgeForce"))

@@ -49,10 +49,15 @@ class DiscoverCli : public ::testing::Test
         const Result r = rosin(args);
         ASSERT_EQ(r.status, 0) << r.err;
     }
-    nlohmann::json discover(const std::string& dataset)
+    /// `extra`: e.g. {"--max-effects", "1"} where only the first step is asserted (the search then stops
+    /// there: half the time of a run whose second step tries every candidate again).
+    nlohmann::json discover(const std::string& dataset, const std::vector<std::string>& extra = {})
     {
-        const Result r = rosin({"discover", dataset, "--json", dataset + ".json", "--report",
-                                dataset + "-report", "--threads", "2"});
+        std::vector<std::string> args{"discover",        dataset,    "--json",
+                                      dataset + ".json", "--report", dataset + "-report",
+                                      "--threads",       "2"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const Result r = rosin(args);
         EXPECT_EQ(r.status, 0) << r.err;
         EXPECT_TRUE(fs::exists(path(dataset + "-report/report.md")));
         std::printf("[ figures  ] %s\n", r.out.c_str());
@@ -63,7 +68,8 @@ class DiscoverCli : public ::testing::Test
     rosin::test::TempDir dir;
 };
 
-// One hidden effect: named first, significant on the held-out half, and the gap at least halved.
+// One hidden effect: named first, significant on the held-out half, and the gap at least halved; the search
+// stops after the first step (--max-effects 1), which is all this asserts.
 struct HiddenEffect
 {
     std::string name, spec, seed;
@@ -103,7 +109,8 @@ TEST_P(DiscoverHiddenEffect, IsNamedFirstAndAtLeastHalvesTheGap)
 {
     const HiddenEffect& h = GetParam();
     makeDataset({h.spec}, h.seed, "d", h.extra);
-    const auto j = discover("d");
+    const auto j = discover("d", {"--max-effects", "1"});
+    EXPECT_EQ(j["maxEffects"], 1);
     EXPECT_EQ(j["status"], "effect-found");
     ASSERT_FALSE(j["steps"].empty());
     EXPECT_EQ(j["steps"][0]["effect"], h.name);
@@ -208,7 +215,7 @@ TEST_F(DiscoverCli, BreakawayJumpIsTheBestCandidateButShortOfTheBarKnownDiscrepa
 TEST_F(DiscoverCli, TwoHiddenEffectsAreTheTwoExplanations)
 {
     makeDataset({"sticking-creep:creepResistance=60", "hertz-contact"}, "10", "two");
-    const auto j = discover("two");
+    const auto j = discover("two", {"--max-effects", "2"}); // a third step would fit the other four again
     EXPECT_EQ(j["status"], "effect-found");
     ASSERT_GE(j["steps"].size(), 1u);
     std::vector<std::string> found;
@@ -306,7 +313,7 @@ TEST_F(DiscoverCli, ForeignHertzContactInASteadyScanIsNamedFirst)
         rosin({"synth-data", "--generator", "independent", "--effect", "hertz-contact", "--scan", "schelleng",
                "--grid", "12", "--duration", "0.4", "--seed", "31", "--threads", "2", "--out", "hertz"});
     ASSERT_EQ(made.status, 0) << made.err;
-    const auto j = discover("hertz");
+    const auto j = discover("hertz", {"--max-effects", "1"});
     EXPECT_EQ(j["status"], "effect-found");
     ASSERT_FALSE(j["steps"].empty());
     const auto& first = j["steps"][0];
@@ -367,6 +374,16 @@ TEST_F(DiscoverCli, TruncatedTrialFileIsRefusedWithItsName)
     EXPECT_EQ(r.status, 1) << r.err;
     EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(path("cut.json")));
+}
+
+TEST_F(DiscoverCli, MaxEffectsOutsideOneToThreeIsRefused)
+{
+    for (const char* n : {"0", "4", "1.5"})
+    {
+        const Result r = rosin({"discover", "any", "--json", "x.json", "--report", "x", "--max-effects", n});
+        EXPECT_NE(r.status, 0) << n;
+        EXPECT_NE(r.err.find("--max-effects"), std::string::npos) << r.err;
+    }
 }
 
 TEST_F(DiscoverCli, MissingDatasetArgumentIsAUsageError)

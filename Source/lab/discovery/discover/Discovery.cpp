@@ -47,6 +47,8 @@ Discovery runDiscovery(const Dataset& dataset, std::vector<TrialFeatures> measur
     in.seconds = seconds;
     in.threads = settings.threads;
     in.seed = settings.seed;
+    in.maxEffects = settings.maxEffects;
+    d.maxEffects = settings.maxEffects;
     in.log = settings.log;
     in.reference = d.baseline;
     d.calibration = calibrate(in, base);

@@ -23,6 +23,7 @@ struct DiscoverySettings
     std::string baseline = "plastic";
     unsigned threads = 1;
     std::uint64_t seed = 0;
+    std::size_t maxEffects = kMaxEffects; ///< the search stops after adopting this many (1 to kMaxEffects)
     std::ostream* log = nullptr;
 };
 
@@ -32,7 +33,8 @@ struct Discovery
     std::string baselineFriction;
     ScanGrid grid;
     std::size_t trialsUsed = 0, trialsSkipped = 0;
-    std::vector<std::size_t> used; ///< dataset indices of the trials used
+    std::size_t maxEffects = kMaxEffects; ///< as asked (DiscoverySettings)
+    std::vector<std::size_t> used;        ///< dataset indices of the trials used
     std::vector<std::size_t> training, heldOut;
     FeatureScatter scatter;
     /// Indexed like dataset.trials: measured; the nominal baseline's; the calibrated baseline's; the final

@@ -85,6 +85,7 @@ nlohmann::json discoveryJson(const Discovery& d, const Dataset& dataset)
     j["dataset"] = d.datasetFolder;
     j["trialsUsed"] = d.trialsUsed;
     j["trialsSkipped"] = d.trialsSkipped;
+    j["maxEffects"] = d.maxEffects;
     j["baseline"] = {{"friction", d.baselineFriction},
                      {"contact", "galluzzo"},
                      {"body", dataset.rig.body.value_or("cello")},

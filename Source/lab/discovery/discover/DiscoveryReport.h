@@ -1,6 +1,6 @@
 #pragma once
 // rosin discover's outputs: OUT.json (the schema of discover.md) and the researcher's report in Markdown.
-//   { "dataset", "trialsUsed", "trialsSkipped", "baseline": {friction, contact, body, string},
+//   { "dataset", "trialsUsed", "trialsSkipped", "maxEffects", "baseline": {friction, contact, body, string},
 //     "gapBefore", "features": [{name, unit, scatter, scatterMethod, trials, gapBefore, gapAfter, where,
 //     whereAfter}], "steps": [{effect, parameters{}, gapAfter, heldOutGain, pValue, evidence, tried[]}],
 //     "gapAfter", "status", "verdict" (= status), "gapDefinition", "seconds" }

@@ -258,7 +258,7 @@ SearchResult searchEffects(const SearchInputs& in, const SimulationModel& baseli
     std::vector<const Effect*> remaining;
     for (const auto& e : effectCatalog())
         remaining.push_back(&e);
-    while (result.steps.size() < kMaxEffects && !remaining.empty())
+    while (result.steps.size() < in.maxEffects && !remaining.empty())
     {
         // The current model on every trial: the held-out half scores the candidates, and a candidate's fit
         // on the training half is compared with it (SearchInputs::reference).

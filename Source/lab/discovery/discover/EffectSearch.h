@@ -61,7 +61,6 @@ namespace rosin::discovery
 
 inline constexpr double kSignificanceLevel = 0.01;
 inline constexpr double kMinRelativeGain = 0.2;
-inline constexpr std::size_t kMaxEffects = 3;
 /// The share of alpha the held-out half alone decides with; the cross-fit has the rest.
 inline constexpr double kHalfDecides = 0.5;
 /// A candidate is cross-fitted when its held-out half gives p below this and a gain of at least this.

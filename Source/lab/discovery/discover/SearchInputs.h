@@ -13,6 +13,9 @@
 namespace rosin::discovery
 {
 
+/// The search adopts at most this many effects.
+inline constexpr std::size_t kMaxEffects = 3;
+
 struct SearchInputs
 {
     const Dataset* dataset = nullptr;
@@ -23,7 +26,8 @@ struct SearchInputs
     std::vector<double> seconds; ///< each trial's length, s
     unsigned threads = 1;
     std::uint64_t seed = 0;
-    std::ostream* log = nullptr; ///< progress lines, or nullptr
+    std::size_t maxEffects = kMaxEffects; ///< 1 to kMaxEffects: a quicker answer that stops after fewer
+    std::ostream* log = nullptr;          ///< progress lines, or nullptr
     /// The model a fit's candidates are compared with, its features indexed like dataset.trials (the
     /// baseline for the calibration, the current model in the effect search): a candidate that stops
     /// showing Helmholtz motion where that model shows it gains nothing there (GapMeasure.h).
