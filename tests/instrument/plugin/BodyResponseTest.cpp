@@ -46,18 +46,6 @@ juce::File writeWav(const juce::File& file, const std::vector<float>& x)
     return file;
 }
 
-struct TempFolder
-{
-    juce::TemporaryFile dir{"rosin-body-response"};
-    juce::File folder() const
-    {
-        const juce::File f = dir.getFile();
-        f.createDirectory();
-        return f;
-    }
-    ~TempFolder() { dir.getFile().deleteRecursively(); }
-};
-
 std::vector<float> renderNote(plugin::RosinProcessor& p, engine::OutputChoice output)
 {
     setParameter(p, plugin::ids::output, static_cast<float>(output));

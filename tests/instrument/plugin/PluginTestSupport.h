@@ -61,6 +61,19 @@ inline void setParameter(plugin::RosinProcessor& p, const char* id, float plainV
     parameter->setValueNotifyingHost(parameter->convertTo0to1(plainValue));
 }
 
+/// A temporary folder for a test's files, removed with everything in it at the end of its scope.
+struct TempFolder
+{
+    juce::TemporaryFile dir{"rosin-plugin-test"};
+    juce::File folder() const
+    {
+        const juce::File f = dir.getFile();
+        f.createDirectory();
+        return f;
+    }
+    ~TempFolder() { dir.getFile().deleteRecursively(); }
+};
+
 inline bool allFinite(const std::vector<float>& x)
 {
     for (float v : x)

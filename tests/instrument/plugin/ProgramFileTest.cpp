@@ -14,18 +14,6 @@ namespace rosin::test
 namespace ROSIN_FILE_LOCAL
 {
 
-struct TempFolder
-{
-    juce::TemporaryFile dir{"rosin-program-file"};
-    juce::File folder() const
-    {
-        const juce::File f = dir.getFile();
-        f.createDirectory();
-        return f;
-    }
-    ~TempFolder() { dir.getFile().deleteRecursively(); }
-};
-
 /// The default program with a radiation calibration, as fit_body.py writes it: -8 dB below 400 Hz, +8 dB
 /// above 1.6 kHz (large enough to hear, inside the field's +-30 dB).
 juce::File writeFittedProgram(const juce::File& folder, const std::string& gains)
