@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include <juce_audio_processors/juce_audio_processors.h>
+
 #include <lv2/atom/atom.h>
 #include <lv2/buf-size/buf-size.h>
 #include <lv2/core/lv2.h>
@@ -133,11 +135,37 @@ TEST_F(Lv2StateEntry, ADamagedByteCountIsRefusedAndChangesNothing)
     }
 }
 
+// A good state still restores, and is taken: the saved state with the bow force changed in its XML comes
+// back from the next save with that force (a restore that did nothing would give the old one back).
 TEST_F(Lv2StateEntry, AGoodStateStillRestores)
 {
     const std::string before = saved();
-    EXPECT_EQ(restoreText(before.substr(0, before.size() - 1)), LV2_STATE_SUCCESS);
-    EXPECT_EQ(saved(), before);
+    juce::MemoryBlock binary;
+    ASSERT_TRUE(binary.fromBase64Encoding(before.c_str()));
+    auto xml = juce::AudioProcessor::getXmlFromBinary(binary.getData(), static_cast<int>(binary.getSize()));
+    ASSERT_NE(xml, nullptr);
+    juce::XmlElement* force = nullptr;
+    for (auto* p : xml->getChildWithTagNameIterator("PARAM"))
+        if (p->getStringAttribute("id") == "bowForce")
+            force = p;
+    ASSERT_NE(force, nullptr) << xml->toString();
+    ASSERT_NE(force->getDoubleAttribute("value"), 2.5);
+    force->setAttribute("value", 2.5);
+    juce::MemoryBlock changed;
+    juce::AudioProcessor::copyXmlToBinary(*xml, changed);
+    EXPECT_EQ(restoreText(changed.toBase64Encoding().toStdString()), LV2_STATE_SUCCESS);
+
+    const std::string after = saved();
+    juce::MemoryBlock restored;
+    ASSERT_TRUE(restored.fromBase64Encoding(after.c_str()));
+    const auto back =
+        juce::AudioProcessor::getXmlFromBinary(restored.getData(), static_cast<int>(restored.getSize()));
+    ASSERT_NE(back, nullptr);
+    double restoredForce = 0.0;
+    for (auto* p : back->getChildWithTagNameIterator("PARAM"))
+        if (p->getStringAttribute("id") == "bowForce")
+            restoredForce = p->getDoubleAttribute("value");
+    EXPECT_NEAR(restoredForce, 2.5, 1e-4); // through the parameter's normalised float (default 1 N)
 }
 
 } // namespace

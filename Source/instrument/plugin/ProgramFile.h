@@ -10,13 +10,16 @@
 #include <variant>
 
 #include "core/config/Preset.h"
+#include "instrument/plugin/SavedState.h"
 
 namespace rosin::plugin
 {
 
-/// Largest program file accepted, bytes: its text goes into the saved state, which is refused beyond 64 kB
-/// (SavedState.h); a program with radiation gains is about 3 kB.
-inline constexpr juce::int64 kMaxProgramFileBytes = 32 * 1024;
+/// Largest program file accepted, bytes: its text goes into the saved state in an XML attribute, where a
+/// quote takes six bytes, and a state is refused beyond kMaxStateBytes (SavedState.h): an eighth of that
+/// leaves room for the worst case and the parameters (a 32 kB limit let compact JSON make a 69 kB state that
+/// did not reload). A program with radiation gains is about 3 kB, a factory preset under 1 kB.
+inline constexpr juce::int64 kMaxProgramFileBytes = kMaxStateBytes / 8;
 
 struct ProgramFile
 {

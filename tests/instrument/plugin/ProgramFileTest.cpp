@@ -8,6 +8,7 @@
 #include "core/config/PresetLoader.h"
 #include "instrument/engine/OfflineInstrument.h"
 #include "instrument/plugin/PluginTestSupport.h"
+#include "instrument/plugin/SavedState.h"
 
 namespace rosin::test
 {
@@ -16,13 +17,13 @@ namespace ROSIN_FILE_LOCAL
 
 /// The default program with a radiation calibration, as fit_body.py writes it: -8 dB below 400 Hz, +8 dB
 /// above 1.6 kHz (large enough to hear, inside the field's +-30 dB).
-juce::File writeFittedProgram(const juce::File& folder, const std::string& gains)
+juce::File writeFittedProgram(const juce::File& folder, const std::string& gains, int indent = 2)
 {
     nlohmann::json j = config::readJsonFile(config::resolvePresetPath(engine::kDefaultProgramName));
     j["name"] = "my-cello";
     j["radiationGains"] = nlohmann::json::parse(gains);
     const juce::File file = folder.getChildFile("my-cello.json");
-    file.replaceWithText(j.dump(2));
+    file.replaceWithText(j.dump(indent));
     return file;
 }
 
@@ -103,6 +104,47 @@ TEST(PluginProgramFile, SurvivesAReloadAfterTheFileIsGone)
     juce::MemoryBlock factoryState;
     reopened.getStateInformation(factoryState);
     EXPECT_FALSE(factoryState.toString().contains("programFileText"));
+}
+
+// The file's text goes into the state in an XML attribute, where every quote grows to six characters: the
+// largest program file accepted, written as compact JSON, the densest in quotes, must still give a state the
+// plugin restores (a state is refused beyond kMaxStateBytes).
+TEST(PluginProgramFile, TheLargestAcceptedFileStillReloads)
+{
+    TempFolder temp;
+    nlohmann::json gains = nlohmann::json::array();
+    const juce::File file = temp.folder().getChildFile("many-gains.json");
+    for (int i = 0;; ++i)
+    {
+        gains.push_back({{"hz", 20 + i}, {"db", 0}});
+        writeFittedProgram(temp.folder(), gains.dump(), -1).moveFileTo(file);
+        if (file.getSize() > plugin::kMaxProgramFileBytes)
+        {
+            gains.erase(gains.end() - 1);
+            writeFittedProgram(temp.folder(), gains.dump(), -1).moveFileTo(file);
+            break;
+        }
+    }
+    ASSERT_GT(file.getSize(), plugin::kMaxProgramFileBytes - 200);
+    {
+        plugin::RosinProcessor refusing; // one gain more is refused, with the size and the limit
+        nlohmann::json more = gains;
+        more.push_back({{"hz", 20 + static_cast<int>(gains.size())}, {"db", 0}});
+        const juce::File big = writeFittedProgram(temp.folder(), more.dump(), -1);
+        EXPECT_FALSE(refusing.loadProgramFile(big));
+        EXPECT_TRUE(refusing.programFileStatus().contains(juce::String(plugin::kMaxProgramFileBytes)))
+            << refusing.programFileStatus();
+    }
+    plugin::RosinProcessor first;
+    ASSERT_TRUE(first.loadProgramFile(file)) << first.programFileStatus();
+    juce::MemoryBlock state;
+    first.getStateInformation(state);
+    EXPECT_LE(state.getSize(), static_cast<std::size_t>(plugin::kMaxStateBytes));
+    std::printf("[ figures  ] file %lld bytes, state %zu bytes\n", static_cast<long long>(file.getSize()),
+                state.getSize());
+    plugin::RosinProcessor reopened;
+    reopened.setStateInformation(state.getData(), static_cast<int>(state.getSize()));
+    EXPECT_TRUE(reopened.programTitle().startsWith("my-cello")) << reopened.programTitle();
 }
 
 TEST(PluginProgramFile, ABrokenFileIsRefusedNamingFileAndFieldAndChangesNothing)
