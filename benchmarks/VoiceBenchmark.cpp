@@ -18,12 +18,14 @@ namespace
 constexpr double kSampleRate = 48000.0;
 constexpr int kBlock = 4800; // samples per benchmark iteration (0.1 s)
 
-void benchVoice(benchmark::State& state, rosin::physics::FrictionModel model)
+void benchVoice(benchmark::State& state, rosin::physics::FrictionModel model,
+                const rosin::physics::BowParameters& bow = {})
 {
     using namespace rosin::physics;
     VoiceConfig cfg;
     cfg.string = stringFromCatalogue("cello-D3");
     cfg.body = celloBody();
+    cfg.bow = bow;
     BowedStringVoice voice;
     voice.prepare(cfg, makeFrictionLaw(model, galluzzoContact()), kSampleRate);
     // Settle into steady bowing first, so the timing covers the sustained note a player hears.
@@ -77,6 +79,12 @@ int main(int argc, char** argv)
         benchmark::RegisterBenchmark((std::string("Rosin_cello_D_body/") + frictionModelName(model)).c_str(),
                                      [model](benchmark::State& s) { benchVoice(s, model); })
             ->Unit(benchmark::kMicrosecond);
+    // The bow's width costs nothing per sample (it changes the modes' weights); the compliant hair one more
+    // first-order state at the junction.
+    benchmark::RegisterBenchmark(
+        "Rosin_cello_D_body/plastic_horsehair_8mm", [](benchmark::State& s)
+        { benchVoice(s, FrictionModel::Plastic, rosin::physics::horsehairBow(0.008)); })
+        ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark("Rosin_cello_4_strings/plastic", benchCello)->Unit(benchmark::kMicrosecond);
     const std::string markdown = rosin::bench::takeMarkdownFlag(argc, argv);
     benchmark::Initialize(&argc, argv);

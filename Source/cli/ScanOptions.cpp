@@ -31,6 +31,7 @@ constexpr Range kDuration{0.0, 60.0, "s", true};
 constexpr Range kRamp{0.0, 60.0, "s"};
 constexpr Range kLayer{1e-9, 1e-3, "m"};
 constexpr Range kRadius{1e-6, 0.01, "m"};
+constexpr Range kBowWidth{0.0, 0.03, "m"};
 
 double number(const std::string& option, const std::string& text, const Range& range)
 {
@@ -161,6 +162,9 @@ scan::ModelSpec model(const Values& v)
     var.rigidBridge = v.has("--rigid-bridge");
     var.noTorsion = v.has("--no-torsion");
     var.noStiffness = v.has("--no-stiffness");
+    if (const auto* w = v.value("--bow-width"))
+        var.bowWidth = number("--bow-width", *w, kBowWidth);
+    var.horsehair = v.has("--horsehair");
     scan::applyVariations(m, var);
     return m;
 }
@@ -281,6 +285,10 @@ const OptionTable& scanOptionTable()
         {"--rigid-bridge", "", "no body: a rigid bridge (Fig. 12d)"},
         {"--no-torsion", "", "no torsional modes (Fig. 12e)"},
         {"--no-stiffness", "", "no bending stiffness (Fig. 12f)"},
+        {"--bow-width", "M",
+         "width of the hair ribbon on the string (0..0.03; default the preset's, 0: a point)"},
+        {"--horsehair", "",
+         "compliant horsehair instead of the preset's hair (default: rigid, the seeds' rod)"},
         {"", "", "grid (defaults: [Galluzzo2017]):"},
         {"--grid", "N | NxM",
          "N forces x M betas (schelleng) or x M accelerations (guettler); each 1..300;\ndefault 20x20"},

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/physics/body/RadiationGains.h"
+#include "core/physics/bow/BowParameters.h"
 #include "core/physics/rig/OscillatorRigParameters.h"
 #include "core/physics/string/StringParameters.h"
 #include "core/physics/thermal/ContactParameters.h"
@@ -56,6 +57,7 @@ struct Preset
     ContactOverrides contactOverrides;
     bool torsion = true;          ///< torsional modes on ([Galluzzo2017] Fig. 12e turns them off)
     bool bendingStiffness = true; ///< EI on ([Galluzzo2017] Fig. 12f turns it off)
+    physics::BowParameters bow;   ///< ribbon width and hair ("bow"); default the seeds' rod: a rigid point
     double ambientOffset = 0.0;   ///< K, rosin temperature at rest minus the calibration's ambient
     double beta = 0.0899;         ///< default bow position for gestures that do not set one
     /// dB, the plugin's output level for this program (its default -12 dB when absent): a calibration, set so

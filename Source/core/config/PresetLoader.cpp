@@ -42,6 +42,9 @@ constexpr Range kGain{-30.0, 30.0, "dB"};
 constexpr Range kRigFrequency{1.0, 10000.0, "Hz"};
 constexpr Range kRigQ{0.6, 1e5, ""};
 constexpr Range kRigMass{1e-5, 100.0, "kg"};
+constexpr Range kBowWidth{0.0, 0.03, "m"};
+constexpr Range kHairStiffness{1e2, 1e8, "N/m"};
+constexpr Range kHairDamping{0.1, 1e4, "kg/s"};
 
 physics::StringParameters catalogueString(const JsonObject& owner, const std::string& key,
                                           const std::string& name)
@@ -107,6 +110,30 @@ void parseContact(const JsonObject& root, Preset& preset)
     o.layerThickness = c.optionalNumber("layerThickness", kLayerThickness);
     if (const auto scaling = c.optionalOneOf("scaling", {"coulomb", "hertz"}))
         o.scaling = *scaling == "hertz" ? physics::ContactScaling::Hertz : physics::ContactScaling::Coulomb;
+}
+
+// "bow": {"width": m, "hair": "rigid" | "horsehair", "hairStiffness": N/m, "hairDamping": kg/s}; the two
+// numbers change the horsehair values (and imply compliant hair).
+void parseBow(const JsonObject& root, Preset& preset)
+{
+    if (!root.has("bow"))
+        return;
+    const JsonObject b = root.object("bow");
+    b.allowOnly({"width", "hair", "hairStiffness", "hairDamping"});
+    const double width = b.optionalNumber("width", kBowWidth).value_or(0.0);
+    const auto hair = b.optionalOneOf("hair", {"rigid", "horsehair"});
+    const auto stiffness = b.optionalNumber("hairStiffness", kHairStiffness);
+    const auto damping = b.optionalNumber("hairDamping", kHairDamping);
+    if (hair == std::optional<std::string>("rigid") && (stiffness || damping))
+        b.fail("hair", "\"horsehair\" (or no \"hair\") when hairStiffness or hairDamping is given",
+               "\"rigid\"");
+    physics::BowParameters bow = physics::horsehairBow(width);
+    bow.compliantHair = hair == std::optional<std::string>("horsehair") || stiffness || damping;
+    bow.hairStiffness = stiffness.value_or(bow.hairStiffness);
+    bow.hairDamping = damping.value_or(bow.hairDamping);
+    if (!bow.compliantHair)
+        bow = physics::BowParameters{.width = width};
+    preset.bow = bow;
 }
 
 // "rig": {"type": "oscillator", "frequency", "qualityFactor", "modalMass", "normalForce", "rodSpeed"}.
@@ -234,7 +261,7 @@ Preset parsePreset(const nlohmann::json& root, const std::string& file, const st
     const JsonObject r(root, file, "");
     r.allowOnly({"format", "name", "description", "string", "body", "friction", "contact", "torsion",
                  "bendingStiffness", "ambientOffset", "beta", "outputLevel", "bodyResponse", "rig", "player",
-                 "radiationGains"});
+                 "radiationGains", "bow"});
 
     Preset p = defaultPreset();
     p.source = file;
@@ -253,6 +280,7 @@ Preset parsePreset(const nlohmann::json& root, const std::string& file, const st
     p.body = r.optionalOneOf("body", bodyNames()).value_or(p.body);
     p.friction = r.optionalOneOf("friction", frictionNames()).value_or(p.friction);
     parseContact(r, p);
+    parseBow(r, p);
     p.torsion = r.optionalBool("torsion").value_or(p.torsion);
     p.bendingStiffness = r.optionalBool("bendingStiffness").value_or(p.bendingStiffness);
     p.ambientOffset = r.optionalNumber("ambientOffset", kAmbientOffset).value_or(p.ambientOffset);

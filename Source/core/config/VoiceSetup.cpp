@@ -49,6 +49,7 @@ VoiceSetup buildVoiceSetup(const Preset& preset)
     physics::applyRadiationGains(setup.voice.body, preset.radiationGains);
     setup.voice.torsion = preset.torsion;
     setup.voice.bendingStiffness = preset.bendingStiffness;
+    setup.voice.bow = preset.bow;
 
     setup.contact = preset.contact == "schumacher"   ? physics::schumacherContact()
                     : preset.contact == "cantilever" ? physics::cantileverContact()

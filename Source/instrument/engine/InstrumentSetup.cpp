@@ -24,6 +24,7 @@ physics::InstrumentConfig buildInstrumentConfig(const InstrumentKey& key, const 
         config.contact = setup.contact;
         config.torsion = setup.voice.torsion;
         config.bendingStiffness = setup.voice.bendingStiffness;
+        config.bow = setup.voice.bow;
         // The preset's string replaces the instrument string nearest in pitch (log distance).
         std::size_t nearest = 0;
         double best = 1e9;

@@ -19,6 +19,7 @@ ModelSpec modelFromPreset(const config::Preset& preset)
     m.contact = setup.contact;
     m.torsion = preset.torsion;
     m.bendingStiffness = preset.bendingStiffness;
+    m.bow = preset.bow;
     return m;
 }
 
@@ -31,6 +32,7 @@ physics::VoiceConfig voiceConfig(const ModelSpec& model)
     cfg.body = physics::bodyByName(model.body);
     cfg.torsion = model.torsion;
     cfg.bendingStiffness = model.bendingStiffness;
+    cfg.bow = model.bow;
     return cfg;
 }
 

@@ -27,6 +27,7 @@ struct ModelSpec
     /// from the bracket of Table 1). The scan bows open strings, so the voice's own "stopped" switch never
     /// fires.
     bool fingerDamping = false;
+    physics::BowParameters bow; ///< ribbon width and hair (default: the seeds' rigid point)
 };
 
 /// The model of a preset. Throws config::ConfigError if a name in it is unknown.

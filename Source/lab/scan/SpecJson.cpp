@@ -189,6 +189,12 @@ json specToJson(const ScanSpec& s)
     // Only when not the default, so that specs written before the option read back byte-identical.
     if (s.classification != Classification::State)
         j["classification"] = classificationName(s.classification);
+    const physics::BowParameters& bow = m.bow;
+    if (bow.width > 0.0 || bow.compliantHair)
+        j["bow"] = {{"width", bow.width},
+                    {"compliantHair", bow.compliantHair},
+                    {"hairStiffness", bow.hairStiffness},
+                    {"hairDamping", bow.hairDamping}};
     // The vector path of the process (ROSIN_SIMD): files are byte-identical however the work is split only on
     // one path, so a resume or a merge on another path is refused as another specification would be.
     j["kernels"] = physics::simdLevelName(physics::simdLevel());
@@ -217,6 +223,12 @@ ScanSpec specFromJson(const json& j, const std::string& file)
     s.trialSeconds = r.get<double>("trialSeconds");
     s.rampSeconds = r.get<double>("rampSeconds");
     s.trialEnd = readTrialEnd(r, j, file);
+    if (r.has("bow"))
+    {
+        const Reader b = r.child("bow");
+        s.model.bow = {b.get<double>("width"), b.get<bool>("compliantHair"), b.get<double>("hairStiffness"),
+                       b.get<double>("hairDamping")};
+    }
     if (r.has("classification"))
     {
         const auto c = r.get<std::string>("classification");

@@ -22,6 +22,9 @@ void applyVariations(ModelSpec& model, const ModelVariations& v)
         model.torsion = false;
     if (v.noStiffness)
         model.bendingStiffness = false;
+    if (v.horsehair)
+        model.bow = physics::horsehairBow(model.bow.width);
+    model.bow.width = v.bowWidth.value_or(model.bow.width);
 }
 
 const char* scalingName(physics::ContactScaling scaling) noexcept
@@ -37,7 +40,9 @@ nlohmann::json variationsJson(const ModelSpec& m)
             {"fingerDamping", m.fingerDamping},
             {"contactScaling", scalingName(m.contact.rig.scaling)},
             {"calibrationContactRadius", m.contact.calibration.radius},
-            {"calibrationLayerThickness", m.contact.calibration.layerThickness}};
+            {"calibrationLayerThickness", m.contact.calibration.layerThickness},
+            {"bowWidth", m.bow.width},
+            {"compliantHair", m.bow.compliantHair}};
 }
 
 } // namespace rosin::scan

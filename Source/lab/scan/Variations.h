@@ -6,6 +6,7 @@
 //           preset's values (a preset's "contact" object changes those).
 //   Fig. 11 Coulomb or Hertz contact-area scaling of the bowing contact.
 //   Fig. 12 c-f: finger-stopped damping, rigid bridge, no torsion, no bending stiffness.
+//   And the bow the seeds' rods did not have: a ribbon's width and compliant horsehair (BowParameters.h).
 #include <optional>
 
 #include <nlohmann/json.hpp>
@@ -24,12 +25,14 @@ struct ModelVariations
     bool rigidBridge = false;
     bool noTorsion = false;
     bool noStiffness = false;
+    std::optional<double> bowWidth; ///< m, the ribbon's width on the string
+    bool horsehair = false;         ///< compliant hair with the handbook horsehair's values
 };
 
 void applyVariations(ModelSpec& model, const ModelVariations& variations);
 
 /// The model switches as the summary reports them: torsion, bendingStiffness, rigidBridge, fingerDamping,
-/// contactScaling, calibrationContactRadius, calibrationLayerThickness.
+/// contactScaling, calibrationContactRadius, calibrationLayerThickness, bowWidth, compliantHair.
 nlohmann::json variationsJson(const ModelSpec& model);
 
 /// "coulomb" / "hertz".

@@ -34,11 +34,12 @@ constexpr double kFs = 48000.0;
 
 /// Harmonics 25-60 against 1-4 of the bridge force in steady bowing; fails the test unless the motion is
 /// Helmholtz motion.
-double brightness(double force, double speed, double beta)
+double brightness(double force, double speed, double beta, const physics::BowParameters& bow)
 {
     physics::VoiceConfig cfg;
     cfg.string = physics::stringFromCatalogue("cello-D3");
     cfg.body = physics::celloBody();
+    cfg.bow = bow;
     physics::BowedStringVoice voice;
     voice.prepare(
         cfg, physics::makeFrictionLaw(physics::FrictionModel::Plastic, physics::ContactParameters{}), kFs);
@@ -65,41 +66,99 @@ double brightness(double force, double speed, double beta)
 }
 
 /// Least-squares slope of brightness against log2 of the force, over forces in [from, to] (sqrt 2 steps).
-double perForceDoubling(double from, double to, double speed, double beta)
+double perForceDoubling(double from, double to, double speed, double beta, const physics::BowParameters& bow)
 {
     double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
     int n = 0;
     for (double force = from; force <= to * 1.001; force *= std::sqrt(2.0), ++n)
     {
-        const double x = std::log2(force), y = brightness(force, speed, beta);
+        const double x = std::log2(force), y = brightness(force, speed, beta, bow);
         sx += x, sy += y, sxx += x * x, sxy += x * y;
     }
     return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
-TEST(BowBrightness, ForceBrightensSpeedDullsAndTheBowsPlaceAloneDoesLittle)
+// The same laws with the seeds' rigid point and with a cellist's bow (an 8 mm horsehair ribbon).
+class BowBrightness : public ::testing::TestWithParam<bool>
 {
+};
+
+TEST_P(BowBrightness, ForceBrightensSpeedDullsAndTheBowsPlaceAloneDoesLittle)
+{
+    const physics::BowParameters bow = GetParam() ? physics::horsehairBow(0.008) : physics::BowParameters{};
+    const auto b = [&](double force, double speed, double beta)
+    { return brightness(force, speed, beta, bow); };
     // Rows and pairs inside the plastic law's Helmholtz region on this string.
-    const double perForce[] = {perForceDoubling(0.1, 0.4, 0.05, 0.1), perForceDoubling(0.1, 0.57, 0.1, 0.14)};
-    const double perSpeed[] = {brightness(0.8, 0.2, 0.1) - brightness(0.8, 0.1, 0.1),
-                               0.5 * (brightness(0.4, 0.2, 0.14) - brightness(0.4, 0.1, 0.14) +
-                                      brightness(0.57, 0.2, 0.14) - brightness(0.57, 0.1, 0.14))};
-    const double place = brightness(0.4, 0.1, 0.14) - brightness(0.4, 0.1, 0.1);
+    const double perForce[] = {perForceDoubling(0.1, 0.4, 0.05, 0.1, bow),
+                               perForceDoubling(0.1, 0.57, 0.1, 0.14, bow)};
+    const double perSpeed[] = {
+        b(0.8, 0.2, 0.1) - b(0.8, 0.1, 0.1),
+        0.5 * (b(0.4, 0.2, 0.14) - b(0.4, 0.1, 0.14) + b(0.57, 0.2, 0.14) - b(0.57, 0.1, 0.14))};
+    const double place = b(0.4, 0.1, 0.14) - b(0.4, 0.1, 0.1);
     std::printf(
-        "[ figures  ] harmonics 25-60 re 1-4: per doubling of the force %+.1f / %+.1f dB, of the speed "
-        "%+.1f / %+.1f dB (Cremer: +6 / -6); beta 0.1 -> 0.14 %+.1f dB\n",
-        perForce[0], perForce[1], perSpeed[0], perSpeed[1], place);
+        "[ figures  ] %s: harmonics 25-60 re 1-4: per doubling of the force %+.1f / %+.1f dB, of the speed "
+        "%+.1f / %+.1f dB (Cremer: +6 / -6); beta 0.1 -> 0.14 %+.1f dB; at 0.4 N, 0.1 m/s, beta 0.14: %.1f "
+        "dB\n",
+        GetParam() ? "horsehair 8 mm" : "rigid point", perForce[0], perForce[1], perSpeed[0], perSpeed[1],
+        place, b(0.4, 0.1, 0.14));
     for (double d : perForce)
     {
         EXPECT_GT(d, 3.0);
         EXPECT_LT(d, 9.0);
     }
+    // The hair's dashpot in series with the contact weakens the speed's share: measured -5.2 / -1.4 dB with
+    // the 8 mm horsehair bow (-6.0 / -3.0 at a rigid point), so there only the direction is held to.
     for (double d : perSpeed)
     {
-        EXPECT_LT(d, -1.5);
+        EXPECT_LT(d, GetParam() ? -0.5 : -1.5);
         EXPECT_GT(d, -9.0);
     }
     EXPECT_LT(std::abs(place), 3.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Bows, BowBrightness, ::testing::Bool());
+
+/// Bridge force of steady bowing of the cello D on a rigid bridge (classical curve), bowed by `bow`.
+std::vector<double> rigidBridgeForce(const physics::BowParameters& bow, double force, double speed)
+{
+    physics::VoiceConfig cfg;
+    cfg.string = physics::stringFromCatalogue("cello-D3");
+    cfg.bow = bow;
+    physics::BowedStringVoice voice;
+    voice.prepare(
+        cfg, physics::makeFrictionLaw(physics::FrictionModel::Classical, physics::galluzzoContact()), kFs);
+    std::vector<double> F;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(1.2 * kFs); ++k)
+    {
+        const double ramp = std::min(1.0, static_cast<double>(k) / (0.1 * kFs));
+        F.push_back(voice.step({force, speed * ramp, 0.0899, 1.0}).bridgeForce);
+    }
+    return F;
+}
+
+/// Level (dB) of harmonics [first, last] against the fundamental's, over the second half of `F`.
+double harmonicsReFundamental(const std::vector<double>& F, int first, int last)
+{
+    HarmonicTiltOptions o;
+    o.fundamentalHz = physics::stringFromCatalogue("cello-D3").fundamental();
+    o.lowFirst = o.lowLast = 1;
+    o.highFirst = first, o.highLast = last;
+    return harmonicTiltDb(F, F.size() / 2, F.size(), o).value();
+}
+
+// An even ribbon of width W does not bow the mode whose shape averages to zero over it, n = 2 L / W
+// (physics/bow/BowRibbon.h): that mode is neither driven nor felt at the bow, so in Helmholtz motion its
+// harmonic of the bridge force falls far below a point bow's.
+TEST(BowRibbonBrightness, TheModeThatAveragesOutOverTheRibbonIsNotBowed)
+{
+    const double L = physics::stringFromCatalogue("cello-D3").length;
+    const int n = 60; // 8.8 kHz on the cello D
+    const physics::BowParameters ribbon{.width = 2.0 * L / n};
+    const double point = harmonicsReFundamental(rigidBridgeForce({}, 1.0, 0.1), n, n);
+    const double wide = harmonicsReFundamental(rigidBridgeForce(ribbon, 1.0, 0.1), n, n);
+    std::printf("[figure] harmonic %d re the fundamental: point bow %.1f dB, ribbon %.1f mm %.1f dB\n", n,
+                point, 1e3 * ribbon.width, wide);
+    EXPECT_LT(wide, point - 20.0);
 }
 
 } // namespace ROSIN_FILE_LOCAL

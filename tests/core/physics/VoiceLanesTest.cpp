@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include "core/physics/lanes/VoiceLanes.h"
 #include "core/physics/laws/FrictionLawFactory.h"
@@ -19,11 +20,13 @@ namespace ROSIN_FILE_LOCAL
 constexpr double kRate = 48000.0, kBeta = 0.0899;
 constexpr int kSamples = 2400; // 50 ms
 
-VoiceConfig galluzzoRig()
+VoiceConfig galluzzoRig(bool bowWithHair)
 {
     VoiceConfig cfg;
     cfg.string = stringFromCatalogue("cello-D3");
     cfg.body = celloBody();
+    if (bowWithHair)
+        cfg.bow = horsehairBow(0.008); // the ribbon and the hair's own state per lane
     return cfg;
 }
 
@@ -58,15 +61,17 @@ std::vector<std::array<double, kLanes>> runLanes(VoiceLanes& lanes, int variant)
     return out;
 }
 
-// A voice at beta 0.0899 and eight lanes copied from it, with the friction law of the test's parameter.
-class VoiceLanesAgainstVoice : public ::testing::TestWithParam<FrictionModel>
+// A voice at beta 0.0899 and eight lanes copied from it, with the friction law of the test's parameter, bowed
+// at a point with rigid hair or by a horsehair ribbon.
+class VoiceLanesAgainstVoice : public ::testing::TestWithParam<std::tuple<FrictionModel, bool>>
 {
   protected:
     void SetUp() override
     {
-        voice.prepare(galluzzoRig(), makeFrictionLaw(GetParam(), galluzzoContact()), kRate);
+        const FrictionModel model = std::get<0>(GetParam());
+        const bool bowWithHair = std::get<1>(GetParam());
+        voice.prepare(galluzzoRig(bowWithHair), makeFrictionLaw(model, galluzzoContact()), kRate);
         voice.setBowPosition(kBeta, 1.0);
-        const FrictionModel model = GetParam();
         lanes.prepare(voice,
                       makeLaneFriction([model] { return makeFrictionLaw(model, galluzzoContact()); }, kRate));
     }
@@ -111,6 +116,8 @@ TEST_P(VoiceLanesAgainstVoice, LanesDoNotFeelEachOther)
 }
 
 INSTANTIATE_TEST_SUITE_P(Laws, VoiceLanesAgainstVoice,
-                         ::testing::Values(FrictionModel::Classical, FrictionModel::Plastic));
+                         ::testing::Combine(::testing::Values(FrictionModel::Classical,
+                                                              FrictionModel::Plastic),
+                                            ::testing::Bool()));
 
 } // namespace ROSIN_FILE_LOCAL

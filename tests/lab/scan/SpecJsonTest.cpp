@@ -97,6 +97,21 @@ TEST(SpecJson, AnUnknownTrialEndRuleNamesTheField)
     }
 }
 
+TEST(SpecJson, TheBowIsWrittenOnlyWhenNotTheSeedsPoint)
+{
+    ScanSpec s = defaultSpec(ScanKind::Guettler);
+    EXPECT_FALSE(specToJson(s).contains("bow")); // older specs read back byte-identical
+    ModelVariations v;
+    v.bowWidth = 0.008;
+    v.horsehair = true;
+    applyVariations(s.model, v);
+    const ScanSpec back = specFromText(specText(s), "scan.spec.json");
+    EXPECT_EQ(specText(back), specText(s));
+    EXPECT_EQ(back.model.bow.width, 0.008);
+    EXPECT_TRUE(back.model.bow.compliantHair);
+    EXPECT_EQ(back.model.bow.hairStiffness, rosin::physics::horsehairBow(0.0).hairStiffness);
+}
+
 TEST(SpecJson, ClassificationIsWrittenOnlyWhenNotTheDefault)
 {
     ScanSpec s = defaultSpec(ScanKind::Guettler);

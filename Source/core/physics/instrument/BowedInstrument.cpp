@@ -47,6 +47,7 @@ void BowedInstrument::prepare(const InstrumentConfig& config, double sampleRate)
         vc.string = s; // vc.body stays rigid: the strings share body_
         vc.torsion = config.torsion;
         vc.bendingStiffness = config.bendingStiffness;
+        vc.bow = config.bow;
         vc.maxModeFrequencyRatio = bandRatio;
         auto voice = std::make_unique<BowedStringVoice>();
         voice->prepare(vc, makeFrictionLaw(config.friction, config.contact), sampleRate);

@@ -33,6 +33,7 @@ struct InstrumentConfig
     BodyParameters soundBody;
     bool torsion = true;
     bool bendingStiffness = true;
+    BowParameters bow; ///< every string's bow: ribbon width and hair (default: a rigid point)
     FrictionModel friction = FrictionModel::Plastic;
     ContactParameters contact = galluzzoContact();
     /// Modes of the strings and the body above this frequency are left out, Hz; 0 (the default, the full

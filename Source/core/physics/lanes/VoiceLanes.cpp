@@ -83,14 +83,22 @@ void VoiceLanes::restoreLane(int l, const LaneState& state, double scale) noexce
 void VoiceLanes::step(const LaneBowInput& in, std::array<VoiceSample, kLanes>& out) noexcept
 {
     const JunctionTerms& j = c_.junction;
+    const HairTerms& hair = c_.hair;
+    const bool compliantHair = hair.admittance > 0.0;
     LaneJunctionInput junction;
-    junction.loadSlope = 1.0 / j.y0;
+    junction.loadSlope = 1.0 / (j.y0 + hair.admittance);
     std::array<JunctionHistories, kLanes> histories;
+    std::array<double, kLanes> hairH{};
     for (int l = 0; l < kLanes; ++l)
     {
         histories[l] = {
             h_.Sv[l], h_.Sa[l], h_.Tv[l], h_.uh[l], h_.udh[l], h_.uddh[l], h_.previousFriction[l]};
         junction.dvHistory[l] = j.loadLineHistory(histories[l], 0.0) - in.bowVelocity[l];
+        if (compliantHair)
+        {
+            hairH[l] = hairHistory(hair, {h_.hairX[l], h_.hairXd[l]});
+            junction.dvHistory[l] -= hairH[l];
+        }
         junction.bowForce[l] = std::max(0.0, in.bowForce[l]);
     }
     LaneJunctionSolution solution;
@@ -119,8 +127,15 @@ void VoiceLanes::step(const LaneBowInput& in, std::array<VoiceSample, kLanes>& o
         h_.Sv[l] = sv.v[l], h_.Sa[l] = sa.v[l], h_.Tv[l] = tv.v[l];
         h_.uh[l] = u.v[l], h_.udh[l] = ud.v[l], h_.uddh[l] = udd.v[l];
         const double vb = in.bowVelocity[l];
+        double stringVelocity = vb + solution[l].dv;
+        if (compliantHair)
+        {
+            HairState s{h_.hairX[l], h_.hairXd[l]};
+            stringVelocity += advanceHair(hair, s, hairH[l], solution[l].frictionForce);
+            h_.hairX[l] = s.x, h_.hairXd[l] = s.xd;
+        }
         out[l] = {F[l],
-                  vb + solution[l].dv,
+                  stringVelocity,
                   solution[l].frictionForce,
                   vb,
                   friction_->contactTemperature(l),

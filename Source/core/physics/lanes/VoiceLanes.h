@@ -30,7 +30,7 @@ struct LaneBowInput
 struct LaneState
 {
     std::vector<ModalReal> modes; ///< re, im of every transverse, torsional and body mode
-    std::array<double, 7> histories{};
+    std::array<double, 9> histories{};
 };
 
 class VoiceLanes
@@ -58,13 +58,14 @@ class VoiceLanes
     struct Histories
     {
         std::array<double, kLanes> Sv{}, Sa{}, Tv{}, uh{}, udh{}, uddh{}, previousFriction{};
-        std::array<std::array<double, kLanes>*, 7> all() noexcept
+        std::array<double, kLanes> hairX{}, hairXd{}; ///< the bow hair's state (BowHair.h)
+        std::array<std::array<double, kLanes>*, 9> all() noexcept
         {
-            return {&Sv, &Sa, &Tv, &uh, &udh, &uddh, &previousFriction};
+            return {&Sv, &Sa, &Tv, &uh, &udh, &uddh, &previousFriction, &hairX, &hairXd};
         }
-        std::array<const std::array<double, kLanes>*, 7> all() const noexcept
+        std::array<const std::array<double, kLanes>*, 9> all() const noexcept
         {
-            return {&Sv, &Sa, &Tv, &uh, &udh, &uddh, &previousFriction};
+            return {&Sv, &Sa, &Tv, &uh, &udh, &uddh, &previousFriction, &hairX, &hairXd};
         }
     };
 

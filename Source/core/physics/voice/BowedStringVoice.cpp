@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/physics/body/BridgeBody.h"
+#include "core/physics/bow/BowRibbon.h"
 #include "core/physics/modal/ModalKernels.h"
 #include "core/physics/modal/VectorBlock.h"
 #include "core/physics/units/Range.h"
@@ -28,7 +29,11 @@ struct BowedStringVoice::Impl
     StringParameters string;
     double openLength = 0.69, length = 0.69, beta = 0.1, fingerRatio = 1.0;
     bool stopped = false, torsionOn = true;
-    double lossScale = 1.0;                    // VoiceConfig::lossScale
+    double lossScale = 1.0; // VoiceConfig::lossScale
+    BowParameters bow;      // VoiceConfig::bow
+    HairTerms hair;
+    HairState hairState;
+    double hairH = 0.0; // this sample's hair history, between solveJunction() and finishStep()
     double T = 1.0 / 48000.0, modeLimit = 0.0; // rad/s
 
     ModalBank trans, tors;
@@ -157,10 +162,13 @@ void BowedStringVoice::Impl::updateWeights()
     const double m = string.massPerLength, P = string.tension, L = length;
     const double mL = m * L;
     double B1 = 0, Ya = 0, A1 = 0, Bv = 0;
+    // The ribbon's mean over its width (BowRibbon.h); a point bow's factors are exactly 1.
+    const double W = ribbonWidthOnString(bow.width, beta, L);
     for (int i = 0; i < trans.size(); ++i)
     {
         const int n = i + 1;
-        const double phi = std::sin(n * pi * beta) * transActive[i] * staticCorrection(trans, i, T);
+        const double phi = std::sin(n * pi * beta) * ribbonModeFactor(n, W, L) * transActive[i] *
+                           staticCorrection(trans, i, T);
         const double c = mL / (n * pi) * transActive[i]; // bridge-force weight of q''_n (Lagrangian coupling)
         aN[i] = 2.0 * phi / mL;                          // bow force -> mode n
         bN[i] = 2.0 / (n * pi) * transActive[i];         // bridge acceleration -> mode n (times -u'')
@@ -182,7 +190,8 @@ void BowedStringVoice::Impl::updateWeights()
     const double mt = string.torsionalImpedance / string.torsionalWaveSpeed;
     for (int i = 0; i < tors.size(); ++i)
     {
-        const double phi = std::sin((i + 1) * pi * beta) * torsActive[i] * staticCorrection(tors, i, T);
+        const double phi = std::sin((i + 1) * pi * beta) * ribbonModeFactor(i + 1, W, L) * torsActive[i] *
+                           staticCorrection(tors, i, T);
         torsGain[i] = 2.0 * phi / (mt * L);
         torsIn[i] = static_cast<ModalReal>(torsGain[i]);
         const auto rv = 2.0 * phi * tors.residue(i, ModalOutput::Velocity);
@@ -205,9 +214,19 @@ void BowedStringVoice::Impl::updateWeights()
     // lets the friction force ring at Nyquist. Adding c (1 - z^-1), c = 1/(2 Z_eff) - y0, moves the spread
     // back into the current sample: the instantaneous admittance becomes the physical one, the admittance at
     // low frequency is unchanged, and Re c (1 - e^-iwT) >= 0 keeps the bow port passive.
+    // Over a ribbon the physical answer is the share of it that the ribbon's mean velocity keeps within the
+    // sample (BowRibbon.h), per wave type: 1/(2 Z_eff) = 1/(2 Z0) + 1/(2 Zt).
     const double Z0 = string.impedance();
     const double Zeff = torsionOn ? Z0 * string.torsionalImpedance / (Z0 + string.torsionalImpedance) : Z0;
-    const double bandCorrection = std::max(0.0, 1.0 / (2.0 * Zeff) - y0);
+    double physicalY0 = 1.0 / (2.0 * Zeff);
+    if (W > 0.0)
+    {
+        physicalY0 = ribbonDirectShare(string.waveSpeed(), T, W) / (2.0 * Z0);
+        if (torsionOn)
+            physicalY0 +=
+                ribbonDirectShare(string.torsionalWaveSpeed, T, W) / (2.0 * string.torsionalImpedance);
+    }
+    const double bandCorrection = std::max(0.0, physicalY0 - y0);
     y0 += bandCorrection;
     j = {beta, P / L, M3, D, A1, Bv, U0, U1, U2, y0, bandCorrection, bridgeCoupling};
 }
@@ -219,6 +238,8 @@ void BowedStringVoice::Impl::clearState()
     ownBody.reset();
     Sv = Sa = Tv = 0;
     lastF = lastBridge = lastUdd = previousFriction = 0;
+    hairState = {};
+    hairH = 0.0;
 }
 
 BowedStringVoice::BowedStringVoice() : impl_(std::make_unique<Impl>()) {}
@@ -247,6 +268,9 @@ void BowedStringVoice::prepare(const VoiceConfig& config, std::unique_ptr<Fricti
     if (!(config.lossScale > 0.0))
         throw std::invalid_argument("BowedStringVoice::prepare: lossScale must be > 0");
     s.lossScale = config.lossScale;
+    validateBow(config.bow, "BowedStringVoice::prepare");
+    s.bow = config.bow;
+    s.hair = hairTerms(config.bow, sampleRate);
     s.buildModes(config, sampleRate);
     s.updateWeights();
     friction_ = std::move(friction);
@@ -321,6 +345,7 @@ VoiceCoefficients BowedStringVoice::coefficients() const noexcept
     c.torsionalVelocity = &s.torsVel;
     c.body = s.body;
     c.junction = s.j;
+    c.hair = s.hair;
     return c;
 }
 
@@ -334,7 +359,15 @@ double BowedStringVoice::solveJunction(const BowInput& in, double otherStringsFo
     const JunctionHistories h = s.histories();
     const double vh = s.j.loadLineHistory(h, otherStringsForce);
     s.bowVelocity = in.bowVelocity;
-    s.solution = friction_->solve({vh - in.bowVelocity, 1.0 / s.j.y0, std::max(0.0, in.bowForce)});
+    // Compliant hair: the law sees the sliding speed against the hair's contact, not the stick (BowHair.h).
+    double dvHistory = vh - in.bowVelocity;
+    if (s.hair.admittance > 0.0)
+    {
+        s.hairH = hairHistory(s.hair, s.hairState);
+        dvHistory -= s.hairH;
+    }
+    s.solution =
+        friction_->solve({dvHistory, 1.0 / (s.j.y0 + s.hair.admittance), std::max(0.0, in.bowForce)});
     // Bridge force F = R - c G, G the total force on the bridge ([Notes §5.1], one string per port).
     return s.j.bridgeForceBeforeCoupling(s.solution.frictionForce, h);
 }
@@ -362,7 +395,10 @@ VoiceSample BowedStringVoice::finishStep(double totalBridgeForce) noexcept
     s.previousFriction = f;
 
     const double vb = s.bowVelocity;
-    VoiceSample out{F, vb + s.solution.dv, f, vb, friction_->contactTemperature(), s.solution.sticking};
+    double stringVelocity = vb + s.solution.dv;
+    if (s.hair.admittance > 0.0)
+        stringVelocity += advanceHair(s.hair, s.hairState, s.hairH, f);
+    VoiceSample out{F, stringVelocity, f, vb, friction_->contactTemperature(), s.solution.sticking};
     // A runaway (non-finite or absurd) state is reset rather than heard: nothing physical reaches 1e4 N here.
     if (!std::isfinite(F) || !std::isfinite(s.Sv) || std::abs(F) > 1e4)
     {
@@ -425,6 +461,7 @@ double BowedStringVoice::Impl::energy() const
     }
     // Kinetic cross term m u' sum q'_n L/(n pi), the quasi-static shape's own energy, and its tension energy.
     e += 0.5 * mL * ud * cross + mL / 6.0 * ud * ud + string.tension * u * u / (2.0 * L);
+    e += 0.5 * hair.stiffness * hairState.x * hairState.x; // the stretched hair (0 for rigid hair)
     const double mt = string.torsionalImpedance / string.torsionalWaveSpeed;
     for (int i = 0; i < tors.size(); ++i)
     {

@@ -13,6 +13,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/physics/bow/BowHair.h"
 #include "core/physics/friction/FrictionLaw.h"
 #include "core/physics/modal/ModalKernels.h"
 #include "core/physics/voice/JunctionTerms.h"
@@ -38,6 +39,7 @@ struct VoiceCoefficients
     const OutputWeights* torsionalVelocity = nullptr;      ///< Tv
     const BridgeBody* body = nullptr;
     JunctionTerms junction; ///< the per-sample solve: v = v_h + y0 f, F = R - c G
+    HairTerms hair;         ///< the bow hair in series with the contact (admittance 0: rigid hair)
 };
 
 /// Per-sample bow input, already smoothed (see BowGesture), SI units.
@@ -82,7 +84,8 @@ class BowedStringVoice
     int bodyModeCount() const noexcept;
     /// Transverse mode frequencies (Hz) of the current vibrating length.
     std::vector<double> transverseModeFrequencies() const;
-    /// Instantaneous bow-point admittance y0 (s/kg) at the current bow position: v = v_h + y0 f.
+    /// Instantaneous bow-point admittance y0 (s/kg) at the current bow position: v = v_h + y0 f (the
+    /// string's, over the ribbon; the hair's y_h is in series with it).
     double instantaneousAdmittance() const noexcept;
     /// Stored mechanical energy of string (transverse + torsional) and body, J, at the last step.
     double storedEnergy() const noexcept;

@@ -2,6 +2,7 @@
 // Slow "instrument" parameters of one bowed-string voice: which string, which body, which model
 // variations. Changing them means calling BowedStringVoice::prepare() again (off the audio thread).
 #include "core/physics/body/BodyParameters.h"
+#include "core/physics/bow/BowParameters.h"
 #include "core/physics/string/StringParameters.h"
 
 namespace rosin::physics
@@ -19,6 +20,8 @@ struct VoiceConfig
     /// Multiplies every transverse mode's loss factor: string losses above the nominal loss law (the
     /// discrepancy workflow's "extra-string-damping"; 1 = the loss law of [Galluzzo2017] Table 1).
     double lossScale = 1.0;
+    /// The ribbon's width and the hair's give (BowParameters.h); the default is the seeds' point contact.
+    BowParameters bow;
 };
 
 } // namespace rosin::physics

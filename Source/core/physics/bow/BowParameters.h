@@ -1,0 +1,30 @@
+#pragma once
+// The bow as the string feels it: the width of the hair ribbon that touches the string and the hair's own
+// give in the bowing direction (Resources/docs/physics.md, "The bow's width and hair"). The defaults, zero
+// width and rigid hair, are the point contact of the seeds, whose experiments bowed with a rod
+// ([Galluzzo2017] section 2: "rods rather than normal bows").
+#include <string>
+
+namespace rosin::physics
+{
+
+struct BowParameters
+{
+    /// Contact width of the ribbon along the string, m (0: a point). The friction force is spread evenly over
+    /// it and the ribbon sticks or slips as a whole.
+    double width = 0.0;
+    /// The hair yields in the bowing direction as a spring and dashpot in parallel (Kelvin-Voigt, the form of
+    /// Pitteroff and Woodhouse's hair model); false: rigid hair.
+    bool compliantHair = false;
+    double hairStiffness = 0.0; ///< k_h, N/m: the ribbon's stretch towards frog and tip
+    double hairDamping = 0.0;   ///< r_h, kg/s: the ribbon's longitudinal wave impedance, both ways
+};
+
+/// A cellist's bow at mid-bow from horsehair's handbook constants (BowParameters.cpp gives the numbers and
+/// their sources): `width` m of ribbon on the string, compliant hair.
+BowParameters horsehairBow(double width);
+
+/// Throws std::invalid_argument naming `where` and the field when a value is outside its range.
+void validateBow(const BowParameters& bow, const std::string& where);
+
+} // namespace rosin::physics
