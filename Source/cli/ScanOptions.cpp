@@ -31,7 +31,6 @@ constexpr Range kDuration{0.0, 60.0, "s", true};
 constexpr Range kRamp{0.0, 60.0, "s"};
 constexpr Range kLayer{1e-9, 1e-3, "m"};
 constexpr Range kRadius{1e-6, 0.01, "m"};
-constexpr Range kBowWidth{0.0, 0.03, "m"};
 
 double number(const std::string& option, const std::string& text, const Range& range)
 {
@@ -163,7 +162,7 @@ scan::ModelSpec model(const Values& v)
     var.noTorsion = v.has("--no-torsion");
     var.noStiffness = v.has("--no-stiffness");
     if (const auto* w = v.value("--bow-width"))
-        var.bowWidth = number("--bow-width", *w, kBowWidth);
+        var.bowWidth = number("--bow-width", *w, physics::limits::bowWidth);
     var.horsehair = v.has("--horsehair");
     scan::applyVariations(m, var);
     return m;

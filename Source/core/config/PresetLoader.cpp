@@ -42,9 +42,6 @@ constexpr Range kGain{-30.0, 30.0, "dB"};
 constexpr Range kRigFrequency{1.0, 10000.0, "Hz"};
 constexpr Range kRigQ{0.6, 1e5, ""};
 constexpr Range kRigMass{1e-5, 100.0, "kg"};
-constexpr Range kBowWidth{0.0, 0.03, "m"};
-constexpr Range kHairStiffness{1e2, 1e8, "N/m"};
-constexpr Range kHairDamping{0.1, 1e4, "kg/s"};
 
 physics::StringParameters catalogueString(const JsonObject& owner, const std::string& key,
                                           const std::string& name)
@@ -120,10 +117,10 @@ void parseBow(const JsonObject& root, Preset& preset)
         return;
     const JsonObject b = root.object("bow");
     b.allowOnly({"width", "hair", "hairStiffness", "hairDamping"});
-    const double width = b.optionalNumber("width", kBowWidth).value_or(0.0);
+    const double width = b.optionalNumber("width", physics::limits::bowWidth).value_or(0.0);
     const auto hair = b.optionalOneOf("hair", {"rigid", "horsehair"});
-    const auto stiffness = b.optionalNumber("hairStiffness", kHairStiffness);
-    const auto damping = b.optionalNumber("hairDamping", kHairDamping);
+    const auto stiffness = b.optionalNumber("hairStiffness", physics::limits::hairStiffness);
+    const auto damping = b.optionalNumber("hairDamping", physics::limits::hairDamping);
     if (hair == std::optional<std::string>("rigid") && (stiffness || damping))
         b.fail("hair", "\"horsehair\" (or no \"hair\") when hairStiffness or hairDamping is given",
                "\"rigid\"");

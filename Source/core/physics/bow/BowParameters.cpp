@@ -37,19 +37,17 @@ BowParameters horsehairBow(double width)
 
 void validateBow(const BowParameters& bow, const std::string& where)
 {
-    const auto fail = [&](const std::string& field, const std::string& expected, double got)
+    const auto check = [&](const char* field, const Range& range, double got)
     {
-        throw std::invalid_argument(where + ": bow." + field + " must be " + expected + ", not " +
-                                    std::to_string(got));
+        if (!range.contains(got))
+            throw std::invalid_argument(where + ": bow." + field + " must be " + range.describe() + ", not " +
+                                        formatNumber(got));
     };
-    if (!(bow.width >= 0.0 && bow.width <= 0.03))
-        fail("width", "0..0.03 m", bow.width);
+    check("width", limits::bowWidth, bow.width);
     if (bow.compliantHair)
     {
-        if (!(bow.hairStiffness >= 1.0e2 && bow.hairStiffness <= 1.0e8))
-            fail("hairStiffness", "1e2..1e8 N/m", bow.hairStiffness);
-        if (!(bow.hairDamping >= 0.1 && bow.hairDamping <= 1.0e4))
-            fail("hairDamping", "0.1..1e4 kg/s", bow.hairDamping);
+        check("hairStiffness", limits::hairStiffness, bow.hairStiffness);
+        check("hairDamping", limits::hairDamping, bow.hairDamping);
     }
 }
 

@@ -5,8 +5,18 @@
 // ([Galluzzo2017] section 2: "rods rather than normal bows").
 #include <string>
 
+#include "core/physics/units/Range.h"
+
 namespace rosin::physics
 {
+
+namespace limits
+{
+/// What a bow may be, wherever it is given (a preset, a scan option, a VoiceConfig).
+inline constexpr Range bowWidth{0.0, 0.03, "m"};
+inline constexpr Range hairStiffness{1e2, 1e8, "N/m"};
+inline constexpr Range hairDamping{0.1, 1e4, "kg/s"};
+} // namespace limits
 
 struct BowParameters
 {
