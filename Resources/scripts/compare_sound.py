@@ -29,21 +29,14 @@ import warnings
 
 import numpy as np
 
+import smf
+
 TICKS = 480  # per quarter note at 120 bpm: a tick is 1/960 s
 SOUNDFONT = "/usr/share/sounds/sf2/FluidR3_GM.sf2"
 NOTE_NAMES = {"C": 0, "D": 2, "E": 4, "F": 5, "G": 7, "A": 9, "B": 11}
 BAND_CENTRES = [10.0 ** (n / 10.0) for n in range(19, 41)]  # 79.4 Hz .. 10 kHz, the nominal third octaves
 BAND_FLOOR_DB = 50.0
 ONSET = 0.2  # s: each note starts here
-
-
-def _varlen(n):
-    out = [n & 0x7F]
-    n >>= 7
-    while n:
-        out.insert(0, 0x80 | (n & 0x7F))
-        n >>= 7
-    return bytes(out)
 
 
 def write_midi(path, events):
@@ -54,7 +47,7 @@ def write_midi(path, events):
     now = 0
     for seconds, status, a, b in events:
         tick = int(round(seconds * 2 * TICKS))
-        track += _varlen(tick - now) + bytes([status, a] if b is None else [status, a, b])
+        track += smf.encode_varlen(tick - now) + bytes([status, a] if b is None else [status, a, b])
         now = tick
     track += b"\x00\xff\x2f\x00"
     with open(path, "wb") as f:

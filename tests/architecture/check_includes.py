@@ -24,7 +24,7 @@ EXTERNAL = {
 # Headers a build step writes (juce_add_binary_data), not files of the tree.
 GENERATED = {"FactoryPresetData.h"}
 # Test folders that are not one library's: they test across libraries or check the repository itself.
-CROSS_CUTTING_TESTS = {"architecture", "docs", "format", "fuzz", "golden", "install", "pluginhost", "support"}
+CROSS_CUTTING_TESTS = {"architecture", "docs", "format", "fuzz", "golden", "host", "install", "pluginhost", "support"}
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]', re.M)
 
 

@@ -35,13 +35,20 @@ void collectEvents(const juce::MidiMessageSequence& sequence, int& next, std::in
     for (; next < sequence.getNumEvents(); ++next)
     {
         const auto& m = sequence.getEventPointer(next)->message;
-        const std::int64_t at = toSample(m.getTimeStamp(), sampleRate);
+        const std::int64_t at = eventSample(m.getTimeStamp(), sampleRate);
         if (at >= end)
             break;
         midi.addEvent(m, static_cast<int>(std::max<std::int64_t>(0, at - position)));
     }
 }
 } // namespace
+
+std::int64_t eventSample(double seconds, double sampleRate)
+{
+    // The margin keeps a time that is a whole sample, such as 0.05 s at 44.1 kHz, from landing one early on a
+    // product that comes out as 2204.9999999.
+    return static_cast<std::int64_t>(std::floor(std::max(0.0, seconds) * sampleRate + 1e-6));
+}
 
 bool applyAutomation(ParameterSet& parameters, const AutomationLanes& automation, std::int64_t sample,
                      double sampleRate)

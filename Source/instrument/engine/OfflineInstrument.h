@@ -62,4 +62,8 @@ class OfflineInstrument
 bool applyAutomation(ParameterSet& parameters, const AutomationLanes& automation, std::int64_t sample,
                      double sampleRate);
 
+/// The sample an event at `seconds` plays at: the one whose period [n, n + 1) / fs holds its time, as a host
+/// that counts time in samples places it (Ardour does).
+std::int64_t eventSample(double seconds, double sampleRate);
+
 } // namespace rosin::engine

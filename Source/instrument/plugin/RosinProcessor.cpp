@@ -192,6 +192,10 @@ void RosinProcessor::processBlock(juce::AudioBuffer<float>& buffer, juce::MidiBu
     juce::ScopedNoDenormals noDenormals;
     const int numSamples = buffer.getNumSamples();
     buffer.clear();
+    // Offline, nothing waits for this block: a pending rebuild happens here rather than at the timer's next
+    // tick, so an export renders the same on every run (and as `rosin render --midi` does).
+    if (isNonRealtime())
+        serviceEngineBuilds();
     Engine* active = slot_.acquire();
     if (active == nullptr || buffer.getNumChannels() == 0)
         return;

@@ -33,6 +33,30 @@ TEST(PluginDeterminism, DemoPhraseIsBitIdenticalAcrossRunsAndBlockSizes)
               << ", identical for block sizes 1, 7, 64, 512 (x2), 4096\n";
 }
 
+// A DAW's export runs the plugin offline, faster than the message thread's timer: the block after a change of
+// instrument must already play the new one, or an export would depend on when the timer fired. Live, the
+// change waits for the builder (the timer), which this test never runs.
+TEST(PluginDeterminism, OfflineTheBlockAfterAChangePlaysTheNewInstrument)
+{
+    plugin::RosinProcessor p;
+    p.setPlayConfigDetails(0, 2, 48000.0, 256);
+    p.prepareToPlay(48000.0, 256);
+    juce::AudioBuffer<float> buffer(2, 256);
+    juce::MidiBuffer midi;
+    const auto lowest = [&p] { return p.telemetry().strings[0].read().openFrequency; };
+    p.processBlock(buffer, midi);
+    EXPECT_NEAR(lowest(), 65.41f, 0.05f); // the cello's C string
+
+    p.setParameterValue(engine::ids::instrument, 1.0f); // violin
+    p.processBlock(buffer, midi);
+    EXPECT_NEAR(lowest(), 65.41f, 0.05f) << "live: the builder has not run yet";
+    p.setNonRealtime(true);
+    p.processBlock(buffer, midi);
+    EXPECT_NEAR(lowest(), 196.0f, 0.1f) << "offline: the violin's G string at the next block";
+    p.setNonRealtime(false);
+    p.releaseResources();
+}
+
 TEST(PluginState, SaveAndRestoreGivesAnIdenticalNextRender)
 {
     plugin::RosinProcessor original;

@@ -71,7 +71,7 @@ engine::MidiRenderResult renderMidi(plugin::RosinProcessor& processor,
         for (; next < sequence.getNumEvents(); ++next)
         {
             const auto& m = sequence.getEventPointer(next)->message;
-            const std::int64_t at = toSample(m.getTimeStamp(), fs);
+            const std::int64_t at = engine::eventSample(m.getTimeStamp(), fs);
             if (at >= end)
                 break;
             midi.addEvent(m, static_cast<int>(std::max<std::int64_t>(0, at - position)));

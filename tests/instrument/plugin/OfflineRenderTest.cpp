@@ -29,6 +29,21 @@ const engine::FactoryProgram& program(const std::string& name)
     throw std::runtime_error("no factory program " + name);
 }
 
+// An event plays in the sample whose period holds its time, as a host counting in samples places it: tick t
+// of a 960-per-quarter file at 60 bpm lies at t * fs / 960 samples exactly, and the sample is that number's
+// integer part (computed here in integers, away from the doubles the render uses).
+TEST(OfflineRender, AnEventPlaysInTheSampleThatHoldsItsTime)
+{
+    for (const int fs : {44100, 48000, 96000})
+        for (int tick = 0; tick < 9600; ++tick)
+        {
+            const double seconds = tick / 960.0;
+            ASSERT_EQ(engine::eventSample(seconds, fs), static_cast<std::int64_t>(tick) * fs / 960)
+                << "tick " << tick << " at " << fs << " Hz";
+        }
+    EXPECT_EQ(engine::eventSample(-0.5, 48000.0), 0);
+}
+
 std::size_t differingSamples(const std::vector<float>& a, const std::vector<float>& b)
 {
     if (a.size() != b.size())
