@@ -22,8 +22,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ARDOUR_LIB = "/usr/lib/ardour7"
 SUPERCLOCKS_PER_SECOND = 282240000  # Ardour 7's superclock rate (the session's TempoMap says so too)
 ARDOUR_TICKS_PER_BEAT = 1920
-EXPORT_TIMEOUT = 60  # s; an export of these files takes 3-10 s
-ATTEMPTS = 3
+EXPORT_TIMEOUT = 40  # s; an export of these files takes 3-10 s, also on a loaded machine
+SESSION_TIMEOUT = 60  # s; making a session takes 2-5 s
+ATTEMPTS = 5  # Ardour's own failures came in up to one run of four on a loaded machine
 
 
 class HostFault(Exception):
@@ -113,7 +114,8 @@ class Ardour:
 
         def attempt():
             shutil.rmtree(folder, ignore_errors=True)
-            return self._run([self.tools["lua"], os.path.join(HERE, "make_session.lua")], "ardour7-lua", env)
+            return self._run([self.tools["lua"], os.path.join(HERE, "make_session.lua")], "ardour7-lua", env,
+                             timeout=SESSION_TIMEOUT)
 
         out = self._retried("session", "making the session " + name, attempt)
         if "instrument: Rosin" not in out or (program and f"program: {program}" not in out):

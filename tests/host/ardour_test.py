@@ -24,12 +24,15 @@ import sys
 import tempfile
 import unittest
 
-import numpy as np
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import debian_python  # noqa: E402
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Resources", "scripts"))
-import smf  # noqa: E402 (Resources/scripts/smf.py)
+debian_python.ensure("numpy", "scipy")
 
-import ardour_session
+import numpy as np  # noqa: E402
+
+import ardour_session  # noqa: E402
+import smf  # noqa: E402 (Resources/scripts/smf.py, on the path ardour_session sets)
 
 TOLERANCE = 1e-6  # of full scale
 SKIP = 77
