@@ -117,7 +117,7 @@ def in_host_order(events):
 
 def delayed(events, ticks):
     """The channel and system events `ticks` later, the meta events (tempo, names) where they were. Ardour
-    sends a controller that lies at the session's very start twice (measured: a CC11 at tick 0 sounds
+    does not play a controller at the session's very start as written (measured: a CC11 at tick 0 sounds
     different there, one tick later it does not), so a file meant to sound the same there starts later."""
     return [(tick if message[0] == 0xFF else tick + ticks, message) for tick, message in events]
 

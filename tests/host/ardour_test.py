@@ -10,8 +10,8 @@ full scale, at two sample rates:
   in a session saved and reopened by ardour7-export: the plugin's state through a real host.
 
 Two things Ardour does with a file that `rosin render` does not, both measured here: at one tick it plays
-controllers before notes whatever the file's order, and it sends a controller that lies at the session's
-very start twice. So the files given to both are first put in Ardour's order and one beat later
+controllers before notes whatever the file's order, and a controller at the session's very start does not
+sound as written. So the files given to both are first put in Ardour's order and one beat later
 (smf.for_host); the demo melody as written is rendered too, and its difference printed, not asserted.
 
 usage: ardour_test.py ROSIN LV2_BUNDLE VST3_BINARY_DIR LV2_URI DEMO_DIR
