@@ -8,11 +8,10 @@
 // plain snapshot (direct atomic pointers); MIDI is applied at its sample offset, so the output does not
 // depend on the block size; denormals are flushed; the output is sanitised (non-finite -> 0, then a soft clip
 // below +-1: SoftClip.h) and a voice that runs away resets itself and is counted. Builder side
-// (message-thread timer, prepareToPlay, or serviceEngineBuilds() from an offline renderer): a change of
-// instrument, friction law, body, ambient temperature or program rebuilds the instrument there and hands it
-// over through EngineSlot (lock-free). It takes effect at the next block boundary. While the host renders
-// offline (isNonRealtime(): a DAW's export, LV2 freewheeling, VST3 kOffline) the block itself does that
-// work first, so an export never depends on when the timer fired.
+// (message-thread timer, prepareToPlay): a change of instrument, friction law, body, ambient temperature or
+// program rebuilds the instrument there and hands it over through EngineSlot (lock-free). It takes effect at
+// the next block boundary. While the host renders offline (isNonRealtime(): a DAW's export, LV2 freewheeling,
+// VST3 kOffline) the block itself does that work first, so an export never depends on when the timer fired.
 #include <array>
 #include <atomic>
 #include <mutex>
@@ -76,8 +75,8 @@ class RosinProcessor : public juce::AudioProcessor, private juce::Timer
     // --- Rosin ---
     juce::AudioProcessorValueTreeState& parameters() noexcept { return state_; }
     /// Builder-side work: frees retired engines and builds one if the instrument parameters changed. Called
-    /// by the message-thread timer; an offline renderer calls it between blocks. On the audio thread only
-    /// while the host renders offline (processBlock does it then).
+    /// by the message-thread timer, and by processBlock while the host renders offline (isNonRealtime()), the
+    /// only time it runs on the audio thread.
     void serviceEngineBuilds();
     /// Sets a parameter by its plain value (its own unit), notifying the host, as a user's move would.
     void setParameterValue(const char* id, float value);

@@ -56,12 +56,13 @@ engine::MidiRenderResult renderMidi(plugin::RosinProcessor& processor,
     std::int64_t position = 0;
     while (position < total)
     {
-        // Automation moves only on grid points: a block ends at the next grid point where a value changes.
+        // Automation moves only on grid points: a block ends at the next grid point where a value changes. A
+        // changed instrument is built by the block itself, as in a host's offline render (isNonRealtime).
         std::int64_t end = std::min<std::int64_t>(position + blockSize, total);
         if (automation != nullptr)
         {
-            if (position % grid == 0 && applyAutomation(processor, *automation, position, fs))
-                processor.serviceEngineBuilds();
+            if (position % grid == 0)
+                applyAutomation(processor, *automation, position, fs);
             const std::int64_t nextGrid = (position / grid + 1) * grid;
             if (nextGrid < end)
                 end = nextGrid;
