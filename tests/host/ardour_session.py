@@ -4,8 +4,11 @@ ardour7-lua on the Dummy backend), a MIDI file as its region, and the master bus
 Everything Ardour writes (its configuration, the VST3 scan cache) goes under a private HOME, so the test
 leaves no trace and never sees a user's settings.
 """
+import base64
 import glob
 import os
+import re
+import struct
 import shutil
 import subprocess
 import sys
@@ -54,7 +57,7 @@ class Ardour:
         os.makedirs(os.path.join(home, ".vst3"), exist_ok=True)
         self.env = dict(os.environ, HOME=home, XDG_CONFIG_HOME=os.path.join(home, ".config"),
                         XDG_CACHE_HOME=os.path.join(home, ".cache"), XDG_DATA_HOME=os.path.join(home, ".local"),
-                        LV2_PATH=os.path.dirname(os.path.abspath(lv2_bundle)))
+                        LV2_PATH=os.path.dirname(os.path.abspath(lv2_bundle)), ROSIN_HOST_SCRIPTS=HERE)
         link = os.path.join(home, ".vst3", os.path.basename(vst3_bundle))
         if not os.path.exists(link):
             os.symlink(os.path.abspath(vst3_bundle), link)
@@ -121,6 +124,24 @@ class Ardour:
         if "instrument: Rosin" not in out or (program and f"program: {program}" not in out):
             raise RuntimeError(f"make_session.lua did not report Rosin {program} on the track:\n" + out)
         return Session(folder, name)
+
+    def automate(self, folder, rate, plugin_format, program, plan):
+        """Runs automate_parameters.lua: `plan` is [(key, default, [values])] in the host's values. Returns
+        the lines it printed, split at "|", and the session folder's path."""
+        name = os.path.basename(folder)
+        env = {"ROSIN_SESSION_DIR": folder, "ROSIN_SESSION_NAME": name, "ROSIN_SAMPLE_RATE": str(rate),
+               "ROSIN_FORMAT": plugin_format, "ROSIN_PROGRAM": program,
+               "ROSIN_PLUGIN_ID": self.vst3_id if plugin_format == "VST3" else self.lv2_uri,
+               "ROSIN_AUTOMATE": ";".join(f"{key}={default!r}:" + ",".join(repr(v) for v in values)
+                                          for key, default, values in plan)}
+
+        def attempt():
+            shutil.rmtree(folder, ignore_errors=True)
+            return self._run([self.tools["lua"], os.path.join(HERE, "automate_parameters.lua")], "ardour7-lua",
+                             env, timeout=SESSION_TIMEOUT + 5 * sum(len(v) + 1 for _, _, v in plan))
+
+        out = self._retried("automation", "automating the parameters in " + name, attempt)
+        return [line.split("|") for line in out.splitlines() if "|" in line]
 
     def export(self, session, wav):
         """The master bus over the session range, 32-bit float, at the session's rate: (rate, samples x
@@ -205,3 +226,61 @@ class Session:
             tempo.set("npm", repr(bpm))
             tempo.set("enpm", repr(bpm))
         tree.write(self.path, xml_declaration=True, encoding="UTF-8")
+
+
+JUCE_BASE64 = ".ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+"
+JUCE_XML_MAGIC = b"VC2!"  # AudioProcessor::copyXmlToBinary's header, then the XML's byte count
+
+
+def juce_base64(text):
+    """The bytes of JUCE's MemoryBlock::toBase64Encoding ("<byte count>.<6 bits a character, least
+    significant first>"), the form JUCE's LV2 wrapper saves a state in."""
+    count, _, body = text.partition(".")
+    bits = 0
+    for i, c in enumerate(body):
+        bits |= JUCE_BASE64.index(c) << (6 * i)
+    return bits.to_bytes((6 * len(body) + 7) // 8, "little")[:int(count)]
+
+
+def state_parameters(blob):
+    """{parameter id: value} of the plugin's saved state, found inside what a wrapper wrote around it."""
+    at = blob.find(JUCE_XML_MAGIC)
+    if at < 0:
+        raise ValueError("no JUCE state (VC2!) in the plugin's saved data")
+    size = struct.unpack("<I", blob[at + 4:at + 8])[0]
+    root = ET.fromstring(blob[at + 8:at + 8 + size].rstrip(b"\0"))
+    return {p.get("id"): float(p.get("value")) for p in root.iter("PARAM")}
+
+
+def saved_plugin_state(snapshot):
+    """The plugin's own parameter values in a saved session file: an LV2's state directory, a VST3's
+    chunk."""
+    root = ET.parse(snapshot).getroot()
+    for processor in root.iter("Processor"):
+        if processor.get("name") != "Rosin" or processor.get("type") not in ("lv2", "vst3"):
+            continue
+        if processor.get("type") == "vst3":
+            return state_parameters(base64.b64decode(processor.find("vst3/chunk").text))
+        state_dir = processor.find("lv2").get("state-dir")
+        ttl = os.path.join(os.path.dirname(snapshot), "plugins", processor.get("id"), state_dir, "state.ttl")
+        with open(ttl) as f:
+            text = re.search(r':StateString> "([^"]+)"', f.read()).group(1)
+        return state_parameters(juce_base64(text))
+    raise ValueError(snapshot + ": no Rosin plugin")
+
+
+def lv2_parameters(dsp_ttl):
+    """[(id, label, default, minimum, maximum, number of choices or 0)] of the LV2 metadata, in order."""
+    with open(dsp_ttl) as f:
+        text = f.read()
+    found = []
+    for m in re.finditer(r"(?ms)^plug:(\S+)\n\ta lv2:Parameter ;(.*?)\.\n", text):
+        block = m.group(2)
+
+        def number(key):
+            return float(re.search(r"lv2:%s ([0-9.eE+-]+)" % key, block).group(1))
+
+        label = re.search(r'rdfs:label "([^"]*)"', block).group(1)
+        choices = len(re.findall(r"rdf:value", block))
+        found.append((m.group(1), label, number("default"), number("minimum"), number("maximum"), choices))
+    return found
