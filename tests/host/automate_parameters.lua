@@ -8,6 +8,7 @@
 -- Printed, one line each (fields separated by "|"):
 --   control|<key>|<label>|<lower>|<upper>|<toggled>|<integer step>|<range steps>|<host's value>
 --   snapshot|<snapshot name>|<key>|<value>     (the first with neither: the state before any automation)
+--   latency|<samples the host compensates for the plugin>
 --   bypass|<snapshot name>|<1 when the host bypassed the plugin, else 0>
 --   program|<label>|<snapshot name>
 --   readback|<key>|<host's value>
@@ -73,6 +74,8 @@ end
 -- The plugin's state before any automation: what every later snapshot but one parameter must still hold.
 session:save_state(name .. "-0", false, false, false, false, false)
 print(string.format("snapshot|%s-0||", name))
+-- The latency the host compensates for the plugin, as the plugin reports it.
+print(string.format("latency|%d", insert:signal_latency()))
 local taken = 0
 for entry in need("ROSIN_AUTOMATE"):gmatch("[^;]+") do
 	local key, default, values = entry:match("^(.-)=([^:]+):(.+)$")
