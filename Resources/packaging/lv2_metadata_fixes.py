@@ -4,6 +4,8 @@
 
 - the plugin is also a doap:Project (it carries doap:maintainer and doap:release, whose domain that is);
 - the maintainer's empty foaf:mbox <> (a file URL in lv2info) is left out;
+- the project gets its licence (doap:license), homepage (doap:homepage) and a description that says what it
+  is (JUCE writes the product name again), as the command line gives them;
 - the presets' state key <...:Program> is declared: an rdf:Property with a label and an xsd:int range;
 - the UI lists ui:noUserResize (a feature) as extension data and opts:interface (extension data) as an
   optional feature: each is taken out of the list it does not belong to (ui:resize is offered, so the UI
@@ -19,7 +21,8 @@
   port at every block, so a value a host sent to the property was undone at once (Ardour listed it as a
   control that did nothing). The host's own bypass reaches the plugin through that port.
 
-usage: lv2_metadata_fixes.py BUNDLE_DIR     (rewrites dsp.ttl, manifest.ttl and ui.ttl in place)
+usage: lv2_metadata_fixes.py BUNDLE_DIR LICENSE_URI HOMEPAGE_URI DESCRIPTION
+       (rewrites dsp.ttl and ui.ttl in place)
 Exit status 0, or 1 when a file cannot be read or does not hold what JUCE writes.
 """
 import os
@@ -84,7 +87,7 @@ def typed_parameter(block):
     return integer_bounds(block)
 
 
-def fix_dsp(text):
+def fix_dsp(text, license_uri, homepage, description):
     text = PARAMETER.sub(lambda m: typed_parameter(m.group(0)), without_bypass_property(text))
     text = re.sub(r"\n\t\tfoaf:mbox <> ;", "", text)
     m = re.search(r"(?m)^<([^>]+)>\n\tui:ui <[^>]+> ;\n\ta lv2:InstrumentPlugin[ ,a-zA-Z:]* ;", text)
@@ -93,6 +96,10 @@ def fix_dsp(text):
     plugin = m.group(1)
     text = replace_once(text, "\ta lv2:InstrumentPlugin ;", "\ta lv2:InstrumentPlugin , doap:Project ;",
                         "plugin type")
+    if "doap:license" not in text:
+        text = replace_once(text, '\tdoap:description "%s" ;\n' % re.search(r'doap:name "([^"]*)"', text).group(1),
+                            '\tdoap:description "%s" ;\n\tdoap:license <%s> ;\n\tdoap:homepage <%s> ;\n'
+                            % (description.replace('"', "'"), license_uri, homepage), "doap:description")
     if "<%s:Program>" % plugin not in text:
         if "@prefix rdf:" not in text or "@prefix rdfs:" not in text or "@prefix xsd:" not in text:
             raise ValueError("rdf, rdfs or xsd prefix missing")
@@ -108,11 +115,11 @@ def fix_ui(text):
 
 
 def main(argv):
-    if len(argv) != 1:
+    if len(argv) != 4:
         print(__doc__, file=sys.stderr)
         return 1
-    bundle = argv[0]
-    for name, fix in (("dsp.ttl", fix_dsp), ("ui.ttl", fix_ui)):
+    bundle, license_uri, homepage, description = argv
+    for name, fix in (("dsp.ttl", lambda t: fix_dsp(t, license_uri, homepage, description)), ("ui.ttl", fix_ui)):
         path = os.path.join(bundle, name)
         try:
             with open(path) as f:

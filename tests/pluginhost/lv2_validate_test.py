@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The built LV2 bundle against the LV2 specifications: Debian's lv2_validate finds no error in it, no
 parameter carries a port property (their domain is lv2:Port; Resources/packaging/lv2_metadata_fixes.py says
-a switch or a list by its datatype), and lv2info's view has no empty e-mail address.
+a switch or a list by its datatype), the project names its licence, homepage, maintainer and what it is, and
+lv2info's view has no empty e-mail address.
 
 usage: lv2_validate_test.py LV2_VALIDATE BUNDLE_DIR
 """
@@ -35,6 +36,10 @@ def main(validate, bundle):
     if not typed:
         print("no parameter is a switch or a list: the metadata fix did not run")
         ok = False
+    for needed in ("doap:license <", "doap:homepage <", "doap:maintainer [", "doap:description"):
+        if needed not in dsp:
+            print("the plugin's metadata has no " + needed.split()[0])
+            ok = False
     if "foaf:mbox <>" in dsp:
         print("the maintainer has an empty e-mail address (foaf:mbox <>)")
         ok = False
