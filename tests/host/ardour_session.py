@@ -14,6 +14,7 @@ import subprocess
 import sys
 import warnings
 import xml.etree.ElementTree as ET
+from collections import namedtuple
 
 import numpy as np
 
@@ -127,7 +128,7 @@ class Ardour:
 
     def automate(self, folder, rate, plugin_format, program, plan):
         """Runs automate_parameters.lua: `plan` is [(key, default, [values])] in the host's values. Returns
-        the lines it printed, split at "|", and the session folder's path."""
+        the lines it printed, each split at "|"."""
         name = os.path.basename(folder)
         env = {"ROSIN_SESSION_DIR": folder, "ROSIN_SESSION_NAME": name, "ROSIN_SAMPLE_RATE": str(rate),
                "ROSIN_FORMAT": plugin_format, "ROSIN_PROGRAM": program,
@@ -269,8 +270,11 @@ def saved_plugin_state(snapshot):
     raise ValueError(snapshot + ": no Rosin plugin")
 
 
+Parameter = namedtuple("Parameter", "id label default minimum maximum choices")  # choices: 0 if continuous
+
+
 def lv2_parameters(dsp_ttl):
-    """[(id, label, default, minimum, maximum, number of choices or 0)] of the LV2 metadata, in order."""
+    """[Parameter] of the LV2 metadata, in order."""
     with open(dsp_ttl) as f:
         text = f.read()
     found = []
@@ -282,5 +286,5 @@ def lv2_parameters(dsp_ttl):
 
         label = re.search(r'rdfs:label "([^"]*)"', block).group(1)
         choices = len(re.findall(r"rdf:value", block))
-        found.append((m.group(1), label, number("default"), number("minimum"), number("maximum"), choices))
+        found.append(Parameter(m.group(1), label, number("default"), number("minimum"), number("maximum"), choices))
     return found

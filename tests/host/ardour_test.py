@@ -71,6 +71,13 @@ def controller_phrase(path):
     smf.write(path, 960, smf.for_host(events, 960))
 
 
+def report_faults_and_clean_up(case):
+    """A test class's tearDownClass: how often Ardour failed by itself, then its temporary folder gone."""
+    print("Ardour's own failures, each tried again: " + (", ".join(f"{n} {kind}" for kind, n in
+                                                             sorted(case.host.faults.items())) or "none"))
+    case.temp.cleanup()
+
+
 class ArdourRendersLikeRosin(unittest.TestCase):
     rosin = lv2 = vst3 = uri = demo = None
 
@@ -88,9 +95,7 @@ class ArdourRendersLikeRosin(unittest.TestCase):
 
     @classmethod
     def tearDownClass(cls):
-        print("Ardour's own failures, each tried again: " + (", ".join(f"{n} {kind}" for kind, n in
-                                                                 sorted(cls.host.faults.items())) or "none"))
-        cls.temp.cleanup()
+        report_faults_and_clean_up(cls)
 
     def seconds(self, midi):
         division, events = smf.read(midi)
@@ -158,24 +163,22 @@ class HostParameters(unittest.TestCase):
         cls.temp = tempfile.TemporaryDirectory(prefix="rosin-ardour-parameters-")
         cls.host = ardour_session.Ardour(os.path.join(cls.temp.name, "home"), cls.lv2, cls.vst3, cls.uri)
         cls.parameters = ardour_session.lv2_parameters(os.path.join(cls.lv2, "dsp.ttl"))
-        cls.choices = [p for p in cls.parameters if p[5] >= 2]
+        cls.choices = [p for p in cls.parameters if p.choices >= 2]
 
     @classmethod
     def tearDownClass(cls):
-        print("Ardour's own failures, each tried again: " + (", ".join(f"{n} {kind}" for kind, n in
-                                                                 sorted(cls.host.faults.items())) or "none"))
-        cls.temp.cleanup()
+        report_faults_and_clean_up(cls)
 
     def key(self, plugin_format, parameter):
-        return parameter[1] if plugin_format == "VST3" else parameter[0]
+        return parameter.label if plugin_format == "VST3" else parameter.id
 
     def host_value(self, plugin_format, parameter, index):
         """What the host sends for choice `index`: an LV2 property's own value, a VST3's normalised one."""
-        return index / (parameter[5] - 1) if plugin_format == "VST3" else float(index)
+        return index / (parameter.choices - 1) if plugin_format == "VST3" else float(index)
 
     def run_host(self, plugin_format):
-        plan = [(self.key(plugin_format, p), self.host_value(plugin_format, p, int(p[2])),
-                 [self.host_value(plugin_format, p, k) for k in range(p[5])]) for p in self.choices]
+        plan = [(self.key(plugin_format, p), self.host_value(plugin_format, p, int(p.default)),
+                 [self.host_value(plugin_format, p, k) for k in range(p.choices)]) for p in self.choices]
         folder = os.path.join(self.temp.name, "parameters-" + plugin_format)
         lines = self.host.automate(folder, self.RATE, plugin_format, PROGRAM, plan)
         return folder, lines
@@ -184,17 +187,17 @@ class HostParameters(unittest.TestCase):
         """What the host lists of each parameter: its title, and a switch as a toggle, a list by its steps."""
         for p in self.parameters:
             key = self.key(plugin_format, p)
-            self.assertIn(key, controls, f"{plugin_format}: the host does not list {p[1]}")
+            self.assertIn(key, controls, f"{plugin_format}: the host does not list {p.label}")
             label, lower, upper, toggled, integer, steps = controls[key][:6]
-            self.assertEqual(label, p[1])
+            self.assertEqual(label, p.label)
             if plugin_format == "VST3":
-                self.assertEqual((float(lower), float(upper)), (0.0, 1.0), p[1])
-                self.assertEqual(toggled == "true", p[5] == 2, f"{p[1]}: a toggle")
-                self.assertEqual(int(steps), p[5] if p[5] > 2 else 0, f"{p[1]}: steps")
+                self.assertEqual((float(lower), float(upper)), (0.0, 1.0), p.label)
+                self.assertEqual(toggled == "true", p.choices == 2, f"{p.label}: a toggle")
+                self.assertEqual(int(steps), p.choices if p.choices > 2 else 0, f"{p.label}: steps")
             else:
-                self.assertAlmostEqual(float(lower), p[3], delta=1e-6 * (p[4] - p[3]), msg=p[1])
-                self.assertAlmostEqual(float(upper), p[4], delta=1e-6 * (p[4] - p[3]), msg=p[1])
-                self.assertEqual(toggled == "true" or integer == "true", p[5] >= 2, f"{p[1]}: a switch or list")
+                self.assertAlmostEqual(float(lower), p.minimum, delta=1e-6 * (p.maximum - p.minimum), msg=p.label)
+                self.assertAlmostEqual(float(upper), p.maximum, delta=1e-6 * (p.maximum - p.minimum), msg=p.label)
+                self.assertEqual(toggled == "true" or integer == "true", p.choices >= 2, f"{p.label}: a switch or list")
 
     def assert_no_latency(self, lines):
         """The host reads no latency of the plugin on its default program: only a measured body response's
@@ -203,25 +206,25 @@ class HostParameters(unittest.TestCase):
         latency = [int(line[1]) for line in lines if line[0] == "latency"]
         self.assertEqual(latency, [0])
 
-    def assert_automation_lands(self, folder, lines):
+    def assert_automation_lands(self, plugin_format, folder, lines):
         """Each snapshot holds the automated value on its parameter and, elsewhere, the first snapshot's
         values but for the parameters automated before, which their lanes left on their defaults."""
-        by_key = {self.key(f, p): p for p in self.choices for f in ("LV2", "VST3")}
+        by_key = {self.key(plugin_format, p): p for p in self.choices}
         snapshots = [line[1:] for line in lines if line[0] == "snapshot"]
         expected = ardour_session.saved_plugin_state(os.path.join(folder, snapshots[0][0] + ".ardour"))
         landed, previous = 0, None
         for name, key, value in snapshots[1:]:
             p = by_key[key]
             if previous is not None and previous is not p:
-                expected[previous[0]] = previous[2]
+                expected[previous.id] = previous.default
             previous = p
-            index = int(round(float(value) * (p[5] - 1))) if key == p[1] else int(float(value))
+            index = int(round(float(value) * (p.choices - 1) if plugin_format == "VST3" else float(value)))
             state = ardour_session.saved_plugin_state(os.path.join(folder, name + ".ardour"))
-            self.assertEqual(state[p[0]], index, f"{p[1]}: the host sent {value}")
-            moved = [k for k in state if k != p[0] and abs(state[k] - expected[k]) > 1e-9]
-            self.assertEqual(moved, [], f"{p[1]} = {value} moved other parameters")
+            self.assertEqual(state[p.id], index, f"{p.label}: the host sent {value}")
+            moved = [k for k in state if k != p.id and abs(state[k] - expected[k]) > 1e-9]
+            self.assertEqual(moved, [], f"{p.label} = {value} moved other parameters")
             landed += 1
-        self.assertEqual(landed, sum(p[5] for p in self.choices))
+        self.assertEqual(landed, sum(p.choices for p in self.choices))
         bypass = [line[1:] for line in lines if line[0] == "bypass"]
         self.assertEqual([b[1] for b in bypass], ["1", "0"])
         for name, bypassed in bypass:
@@ -234,12 +237,12 @@ class HostParameters(unittest.TestCase):
         controls = {line[1]: line[2:] for line in lines if line[0] == "control"}
         self.assert_listing("LV2", controls)
         self.assert_no_latency(lines)
-        landed = self.assert_automation_lands(folder, lines)
+        landed = self.assert_automation_lands("LV2", folder, lines)
         program = next(line for line in lines if line[0] == "program")
         state = ardour_session.saved_plugin_state(os.path.join(folder, program[2] + ".ardour"))
         readback = {line[1]: float(line[2]) for line in lines if line[0] == "readback"}
-        unwritten = [p for p in self.parameters if p[5] < 2 and state[p[0]] != 0]
-        zeros = sum(readback[p[0]] == 0 for p in unwritten)
+        unwritten = [p for p in self.parameters if p.choices < 2 and state[p.id] != 0]
+        zeros = sum(readback[p.id] == 0 for p in unwritten)
         print(f"LV2: {len(controls)} parameters listed, {landed} automated values landed; after {program[1]} "
               f"the host reads 0 for {zeros} of the {len(unwritten)} parameters it never wrote (Ardour 7.3 "
               "learns no LV2 property's value from a plugin: printed, not asserted)")
@@ -250,7 +253,7 @@ class HostParameters(unittest.TestCase):
         self.assert_listing("VST3", controls)
         self.assert_no_latency(lines)
         self.assertEqual(controls.get("Bypass", [None] * 4)[3], "true", "the VST3 lists its bypass as a toggle")
-        landed = self.assert_automation_lands(folder, lines)
+        landed = self.assert_automation_lands("VST3", folder, lines)
         first = next(line for line in lines if line[0] == "snapshot")
         base = ardour_session.saved_plugin_state(os.path.join(folder, first[1] + ".ardour"))
         program = next(line for line in lines if line[0] == "program")
@@ -259,17 +262,17 @@ class HostParameters(unittest.TestCase):
         readback = {line[1]: float(line[2]) for line in lines if line[0] == "readback"}
         moved = checked = 0
         for p in self.parameters:
-            before, after = float(controls[p[1]][6]), readback[p[1]]
-            if p[5] >= 2:
-                self.assertAlmostEqual(before, base[p[0]] / (p[5] - 1), delta=1e-6, msg=f"{p[1]} read first")
-                expected = state[p[0]] / (p[5] - 1)
+            before, after = float(controls[p.label][6]), readback[p.label]
+            if p.choices >= 2:
+                self.assertAlmostEqual(before, base[p.id] / (p.choices - 1), delta=1e-6, msg=f"{p.label} read first")
+                expected = state[p.id] / (p.choices - 1)
             else:
-                expected = self.skewed(p, base[p[0]], before, state[p[0]])
+                expected = self.skewed(p, base[p.id], before, state[p.id])
             if expected is not None:
-                self.assertAlmostEqual(after, expected, delta=1e-4, msg=f"{p[1]} after {PROGRAM}")
+                self.assertAlmostEqual(after, expected, delta=1e-4, msg=f"{p.label} after {PROGRAM}")
                 checked += 1
-            self.assertEqual(after != before, state[p[0]] != base[p[0]], f"{p[1]}: moved with the program")
-            moved += state[p[0]] != base[p[0]]
+            self.assertEqual(after != before, state[p.id] != base[p.id], f"{p.label}: moved with the program")
+            moved += state[p.id] != base[p.id]
         print(f"VST3: {len(controls)} parameters listed, {landed} automated values landed; after {PROGRAM} the "
               f"host reads every parameter as the plugin has it ({moved} moved, {checked} checked to 1e-4)")
 
@@ -278,7 +281,7 @@ class HostParameters(unittest.TestCase):
         """A continuous parameter's VST3 value on JUCE's skewed range (normalised = proportion ** skew), the
         skew told by the first pair of the plugin's value and the host's reading; None where that pair
         cannot tell it."""
-        first, proportion = ((v - p[3]) / (p[4] - p[3]) for v in (first_value, value))
+        first, proportion = ((v - p.minimum) / (p.maximum - p.minimum) for v in (first_value, value))
         if abs(first - first_host) < 1e-7:
             return proportion  # linear
         if not (0 < first < 1 and 0 < first_host < 1):
