@@ -109,14 +109,25 @@ void parseContact(const JsonObject& root, Preset& preset)
         o.scaling = *scaling == "hertz" ? physics::ContactScaling::Hertz : physics::ContactScaling::Coulomb;
 }
 
-// "bow": {"width": m, "hair": "rigid" | "horsehair", "hairStiffness": N/m, "hairDamping": kg/s}; the two
-// numbers change the horsehair values (and imply compliant hair).
+// "bow": {"width": m, "hair": "rigid" | "horsehair", "hairStiffness": N/m, "hairDamping": kg/s, "slipNoise":
+// relative rms | "ribbon"}; the two hair numbers change the horsehair values (and imply compliant hair).
+// A number, or "ribbon": the estimate from the hairs on the string (physics::ribbonSlipNoise).
+double slipNoiseOf(const JsonObject& b)
+{
+    if (b.has("slipNoise") && b.at("slipNoise").is_string())
+    {
+        b.optionalOneOf("slipNoise", {"ribbon"});
+        return physics::ribbonSlipNoise();
+    }
+    return b.optionalNumber("slipNoise", physics::limits::slipNoise).value_or(0.0);
+}
+
 void parseBow(const JsonObject& root, Preset& preset)
 {
     if (!root.has("bow"))
         return;
     const JsonObject b = root.object("bow");
-    b.allowOnly({"width", "hair", "hairStiffness", "hairDamping"});
+    b.allowOnly({"width", "hair", "hairStiffness", "hairDamping", "slipNoise"});
     const double width = b.optionalNumber("width", physics::limits::bowWidth).value_or(0.0);
     const auto hair = b.optionalOneOf("hair", {"rigid", "horsehair"});
     const auto stiffness = b.optionalNumber("hairStiffness", physics::limits::hairStiffness);
@@ -130,6 +141,7 @@ void parseBow(const JsonObject& root, Preset& preset)
     bow.hairDamping = damping.value_or(bow.hairDamping);
     if (!bow.compliantHair)
         bow = physics::BowParameters{.width = width};
+    bow.slipNoise = slipNoiseOf(b);
     preset.bow = bow;
 }
 

@@ -20,6 +20,9 @@ ModelSpec modelFromPreset(const config::Preset& preset)
     m.torsion = preset.torsion;
     m.bendingStiffness = preset.bendingStiffness;
     m.bow = preset.bow;
+    // A scan measures the deterministic model (its lanes draw no noise, and a cell must repeat): the
+    // program's slip noise, a property of the instrument's sound, is left out.
+    m.bow.slipNoise = 0.0;
     return m;
 }
 

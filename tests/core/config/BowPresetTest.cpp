@@ -37,6 +37,21 @@ TEST(BowPreset, WidthAndHairReachTheVoice)
     const auto plain = loadPreset(dir.write("d.json", R"({"format":"rosin-preset/1"})")).bow;
     EXPECT_EQ(plain.width, 0.0);
     EXPECT_FALSE(plain.compliantHair);
+    EXPECT_EQ(plain.slipNoise, 0.0);
+}
+
+TEST(BowPreset, SlipNoiseIsANumberOrTheRibbonsEstimate)
+{
+    test::TempDir dir;
+    const auto given = loadPreset(dir.write("a.json", presetWithBow(R"({"slipNoise":0.2})"))).bow;
+    EXPECT_EQ(given.slipNoise, 0.2);
+    EXPECT_FALSE(given.compliantHair);
+    const auto ribbon = buildVoiceSetup(
+        loadPreset(dir.write("b.json", presetWithBow(R"({"slipNoise":"ribbon","hair":"horsehair"})"))));
+    EXPECT_EQ(ribbon.voice.bow.slipNoise, physics::ribbonSlipNoise());
+    EXPECT_TRUE(ribbon.voice.bow.compliantHair);
+    // 50 hairs on the string (BowParameters.cpp): 1 / sqrt(50).
+    EXPECT_NEAR(physics::ribbonSlipNoise(), 0.1414, 1e-4);
 }
 
 struct Malformed
@@ -55,6 +70,8 @@ TEST(BowPreset, MalformedBowNamesTheFieldAndWhatWasExpected)
         {R"({"hair":"rigid","hairStiffness":5000})", "bow.hair", "horsehair"},
         {R"({"hairDamping":0})", "bow.hairDamping", "0.1"},
         {R"({"tilt":30})", "bow.tilt", ""},
+        {R"({"slipNoise":0.9})", "bow.slipNoise", "0.5"},
+        {R"({"slipNoise":"rough"})", "bow.slipNoise", "ribbon"},
         {R"(8)", "bow", "object"},
     };
     test::TempDir dir;

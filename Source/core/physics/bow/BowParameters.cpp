@@ -35,6 +35,11 @@ BowParameters horsehairBow(double width)
     return bow;
 }
 
+double ribbonSlipNoise()
+{
+    return 1.0 / std::sqrt(kActiveHairs);
+}
+
 void validateBow(const BowParameters& bow, const std::string& where)
 {
     const auto check = [&](const char* field, const Range& range, double got)
@@ -44,6 +49,7 @@ void validateBow(const BowParameters& bow, const std::string& where)
                                         formatNumber(got));
     };
     check("width", limits::bowWidth, bow.width);
+    check("slipNoise", limits::slipNoise, bow.slipNoise);
     if (bow.compliantHair)
     {
         check("hairStiffness", limits::hairStiffness, bow.hairStiffness);

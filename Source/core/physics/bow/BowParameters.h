@@ -16,6 +16,7 @@ namespace limits
 inline constexpr Range bowWidth{0.0, 0.03, "m"};
 inline constexpr Range hairStiffness{1e2, 1e8, "N/m"};
 inline constexpr Range hairDamping{0.1, 1e4, "kg/s"};
+inline constexpr Range slipNoise{0.0, 0.5, "(relative rms)"};
 } // namespace limits
 
 struct BowParameters
@@ -28,7 +29,13 @@ struct BowParameters
     bool compliantHair = false;
     double hairStiffness = 0.0; ///< k_h, N/m: the ribbon's stretch towards frog and tip
     double hairDamping = 0.0;   ///< r_h, kg/s: the ribbon's longitudinal wave impedance, both ways
+    /// Relative rms fluctuation of the force the ribbon slides with (SlipNoise.h); 0: the seeds' smooth rod.
+    double slipNoise = 0.0;
 };
+
+/// The slip noise of a ribbon whose hairs on the string catch and release independently, each by as much
+/// as its own share of the force: 1 / sqrt(hairs on the string) (BowParameters.cpp gives the count).
+double ribbonSlipNoise();
 
 /// A cellist's bow at mid-bow from horsehair's handbook constants (BowParameters.cpp gives the numbers and
 /// their sources): `width` m of ribbon on the string, compliant hair.

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <stdexcept>
 
 #include "core/physics/body/BridgeBody.h"
 #include "core/physics/bow/BowRibbon.h"
+#include "core/physics/bow/SlipNoise.h"
 #include "core/physics/modal/ModalKernels.h"
 #include "core/physics/modal/VectorBlock.h"
 #include "core/physics/units/Range.h"
@@ -34,6 +36,7 @@ struct BowedStringVoice::Impl
     HairTerms hair;
     HairState hairState;
     double hairH = 0.0; // this sample's hair history, between solveJunction() and finishStep()
+    SlipNoise slipNoise;
     double T = 1.0 / 48000.0, modeLimit = 0.0; // rad/s
 
     ModalBank trans, tors;
@@ -240,6 +243,8 @@ void BowedStringVoice::Impl::clearState()
     lastF = lastBridge = lastUdd = previousFriction = 0;
     hairState = {};
     hairH = 0.0;
+    solution = {};
+    slipNoise.reset();
 }
 
 BowedStringVoice::BowedStringVoice() : impl_(std::make_unique<Impl>()) {}
@@ -271,6 +276,8 @@ void BowedStringVoice::prepare(const VoiceConfig& config, std::unique_ptr<Fricti
     validateBow(config.bow, "BowedStringVoice::prepare");
     s.bow = config.bow;
     s.hair = hairTerms(config.bow, sampleRate);
+    // Each string its own stream, the same on every run (libstdc++'s string hash is fixed).
+    s.slipNoise.prepare(config.bow.slipNoise, sampleRate, std::hash<std::string>{}(config.string.name));
     s.buildModes(config, sampleRate);
     s.updateWeights();
     friction_ = std::move(friction);
@@ -366,8 +373,11 @@ double BowedStringVoice::solveJunction(const BowInput& in, double otherStringsFo
         s.hairH = hairHistory(s.hair, s.hairState);
         dvHistory -= s.hairH;
     }
-    s.solution =
-        friction_->solve({dvHistory, 1.0 / (s.j.y0 + s.hair.admittance), std::max(0.0, in.bowForce)});
+    // The slip noise follows last sample's contact: while the string flies back under the ribbon its force
+    // fluctuates; a held contact, and the small slips of a rounded corner, keep the law's own.
+    const bool flyingBack = !s.solution.sticking && std::abs(s.solution.dv) > std::abs(in.bowVelocity);
+    const double bowForce = std::max(0.0, in.bowForce) * s.slipNoise.forceFactor(flyingBack);
+    s.solution = friction_->solve({dvHistory, 1.0 / (s.j.y0 + s.hair.admittance), bowForce});
     // Bridge force F = R - c G, G the total force on the bridge ([Notes §5.1], one string per port).
     return s.j.bridgeForceBeforeCoupling(s.solution.frictionForce, h);
 }
