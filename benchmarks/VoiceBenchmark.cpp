@@ -85,6 +85,15 @@ int main(int argc, char** argv)
         "Rosin_cello_D_body/plastic_horsehair_8mm", [](benchmark::State& s)
         { benchVoice(s, FrictionModel::Plastic, rosin::physics::horsehairBow(0.008)); })
         ->Unit(benchmark::kMicrosecond);
+    // The slip noise: one Gaussian draw per sample while the string flies back.
+    benchmark::RegisterBenchmark("Rosin_cello_D_body/plastic_slip_noise",
+                                 [](benchmark::State& s)
+                                 {
+                                     rosin::physics::BowParameters bow;
+                                     bow.slipNoise = rosin::physics::ribbonSlipNoise();
+                                     benchVoice(s, FrictionModel::Plastic, bow);
+                                 })
+        ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark("Rosin_cello_4_strings/plastic", benchCello)->Unit(benchmark::kMicrosecond);
     const std::string markdown = rosin::bench::takeMarkdownFlag(argc, argv);
     benchmark::Initialize(&argc, argv);
