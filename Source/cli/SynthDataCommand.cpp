@@ -15,6 +15,7 @@
 #include "core/gesture/GestureLimits.h"
 #include "lab/discovery/DatasetReader.h"
 #include "lab/discovery/DatasetWriter.h"
+#include "lab/discovery/independent/GeneratorMember.h"
 #include "lab/discovery/independent/IndependentRun.h"
 #include "lab/discovery/io/TrialSignals.h"
 #include "lab/discovery/synth/SynthRun.h"
@@ -94,7 +95,11 @@ void describe(const discovery::SynthPlan& plan, const SynthDataCommandLine& c, s
         << " beta(s) x " << s.forces.size() << " forces x " << s.second.size()
         << (guettler ? " accelerations" : " bow speed") << " = " << s.cellCount() << " trials of "
         << physics::formatNumber(s.trialSeconds) << " s at " << plan.dataset.sampleRate << " Hz, seed "
-        << plan.seed << (c.generator == "independent" ? ", independent generator" : "") << "\n";
+        << plan.seed << (c.generator == "independent" ? ", independent generator" : "");
+    if (plan.generatorMember != 0)
+        out << " member " << plan.generatorMember
+            << (discovery::isSealedMember(plan.generatorMember) ? " (sealed split)" : " (tuning split)");
+    out << "\n";
 }
 
 // Simulates and writes every trial into the partial folder, then dataset.json.
@@ -190,7 +195,8 @@ HelpPage synthDataHelpPage()
     page.command = "synth-data";
     page.usage = {
         "rosin synth-data --effect NAME|none [--effect NAME2 ...] --scan guettler|schelleng [grid options] "
-        "[--preset NAME] [--sample-rate HZ] [--channels basic|all] [--generator rosin|independent] "
+        "[--preset NAME] [--sample-rate HZ] [--channels basic|all] [--generator rosin|independent [--member "
+        "K]] "
         "--seed S --out DIR [--truth FILE]"};
     page.sections = {
         {"",

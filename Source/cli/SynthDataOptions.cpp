@@ -10,6 +10,7 @@
 #include "core/config/JsonObject.h"
 #include "core/config/PresetLoader.h"
 #include "core/gesture/GestureLimits.h"
+#include "lab/discovery/independent/GeneratorMember.h"
 #include "lab/scan/ModelSpec.h"
 
 namespace rosin::cli
@@ -136,6 +137,17 @@ std::uint64_t seed(const std::string& text)
     return v;
 }
 
+unsigned memberNumber(const std::string& text)
+{
+    constexpr unsigned kMaxMember = 1000000;
+    unsigned v = 0;
+    const char* end = text.data() + text.size();
+    const auto r = std::from_chars(text.data(), end, v);
+    if (text.empty() || r.ec != std::errc() || r.ptr != end || v > kMaxMember)
+        badOptionValue("--member", "an integer in 0.." + std::to_string(kMaxMember), text);
+    return v;
+}
+
 // rosin scan's parser on the grid options, behind synth-data's defaults (the last value of an option wins).
 ScanCommandLine scanGrid(const std::string& kind, const ParsedOptions& options)
 {
@@ -186,6 +198,10 @@ const OptionTable& synthDataOptionTable()
          "constants off nominal within a\nlab's tolerances and an unstated anti-aliasing low-pass, gain "
          "error "
          "and start\ndelay (all drawn from the seed; --truth records them)"},
+        {"--member", "K",
+         "independent generator only: member K of its family (0, the default: its nominal\ndesign; 1-99 the "
+         "tuning split; from 100 the sealed split, which tests only score):\nother numerics, constants "
+         "within their priors, chain and rig (--truth records them)"},
         {"", "", "output:"},
         {"--seed", "S", "integer 0..2^64-1; the same seed and options give byte-identical files"},
         {"--out", "DIR", "the dataset folder: new or empty; built in DIR.tmp and renamed when complete"},
@@ -238,6 +254,15 @@ SynthDataCommandLine parseSynthDataCommandLine(const std::vector<std::string>& a
         if (*generator != "rosin" && *generator != "independent")
             badOptionValue("--generator", "one of rosin, independent", *generator);
         c.generator = *generator;
+    }
+    if (const auto member = optionalValue(options, "--member"))
+    {
+        if (c.generator != "independent")
+            throw UsageError("--member K needs --generator independent (the family is the independent "
+                             "generator's)");
+        s.generatorMember = memberNumber(*member);
+        discovery::applyMemberRig(discovery::generatorMember(s.generatorMember), s.preset);
+        s.scan.model = scan::modelFromPreset(s.preset);
     }
     const auto out = optionalValue(options, "--out");
     if (!out)

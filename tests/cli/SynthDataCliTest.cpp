@@ -20,6 +20,7 @@
 #include "core/config/TempFiles.h"
 #include "lab/discovery/DatasetReader.h"
 #include "lab/discovery/EffectCatalog.h"
+#include "lab/discovery/independent/GeneratorMember.h"
 #include "lab/discovery/io/TrialSignals.h"
 #include "lab/scan/Axis.h"
 
@@ -145,6 +146,38 @@ TEST_F(SynthDataCli, SameSeedSameBytesOtherSeedOtherData)
     for (const auto& [name, bytes] : a)
         if (name != "dataset.json") // the nominal description may coincide; the recordings may not
             EXPECT_NE(bytes, c.at(name)) << name;
+}
+
+// The independent generator's family: member 0 is what the generator has always written (the same bytes as
+// without --member), another member writes other recordings, records its draws in the truth file, and a
+// member without a body states the rigid bridge in dataset.json, as the rig it is.
+TEST_F(SynthDataCli, GeneratorMembersAreOtherSimulatorsOfTheStatedRig)
+{
+    auto args = [&](const std::string& out, const std::string& member)
+    {
+        auto a = tiny("none", "5", out, {"--generator", "independent", "--truth", path(out + ".json")});
+        if (!member.empty())
+            a.insert(a.end(), {"--member", member});
+        return a;
+    };
+    unsigned rigidMember = 0;
+    for (unsigned k = 1; k < 100 && rigidMember == 0; ++k)
+        if (!generatorMember(k).body)
+            rigidMember = k;
+    ASSERT_EQ(synth(args("plain", "")).status, 0);
+    ASSERT_EQ(synth(args("zero", "0")).status, 0);
+    ASSERT_EQ(synth(args("other", std::to_string(rigidMember))).status, 0);
+    const auto plain = files("plain"), zero = files("zero"), other = files("other");
+    EXPECT_TRUE(plain == zero) << "member 0 is the nominal design";
+    for (const auto& [name, bytes] : plain)
+        if (name != "dataset.json")
+            EXPECT_NE(bytes, other.at(name)) << name;
+    EXPECT_FALSE(readJson(path("zero.json"))["independent"].contains("member"));
+    const auto drawn = readJson(path("other.json"))["independent"]["member"];
+    EXPECT_EQ(drawn["member"].get<double>(), rigidMember);
+    EXPECT_EQ(drawn["body"].get<double>(), 0.0);
+    EXPECT_EQ(readJson(path("plain/dataset.json"))["rig"]["body"], "cello");
+    EXPECT_EQ(readJson(path("other/dataset.json"))["rig"]["body"], "rigid");
 }
 
 TEST_F(SynthDataCli, NothingInTheDatasetNamesTheHiddenEffect)
@@ -302,7 +335,9 @@ TEST_F(SynthDataCli, BadValuesNameTheOptionAndWriteNothing)
           Case{with({"--grid", "301"}), "--grid: expected N or NxM"},
           Case{with({"--duration", "0.001"}), "--duration: expected at least 0.01 s"},
           Case{with({"--sample-rate", "44100.5"}), "--sample-rate"},
-          Case{with({"--preset", "no-such-preset"}), "no-such-preset"}})
+          Case{with({"--preset", "no-such-preset"}), "no-such-preset"},
+          Case{with({"--generator", "independent", "--member", "-3"}),
+               "--member: expected an integer in 0..1000000"}})
     {
         const Result r = synth(c.args);
         EXPECT_EQ(r.status, 1) << c.message << "\n" << r.err;
@@ -330,6 +365,7 @@ TEST_F(SynthDataCli, UsageErrorsExitWithTwo)
     EXPECT_EQ(synth({"--effect", "none", "--scan", "guettler", "--seed", "1"}).status, 2); // no --out
     EXPECT_EQ(synth(tiny("none", "1", "x", {"--friction", "classical"})).status, 2);       // hides nothing
     EXPECT_EQ(synth(tiny("none", "1", "x", {"--bow-speed", "0.1"})).status, 2);            // schelleng only
+    EXPECT_EQ(synth(tiny("none", "1", "x", {"--member", "3"})).status, 2); // the independent generator's
     EXPECT_FALSE(fs::exists(path("x")));
 }
 

@@ -9,13 +9,13 @@ namespace rosin::discovery
 
 namespace
 {
-constexpr double kGrowth = 1.25;         ///< grid spacing ratio
 constexpr double kDepthPerRadius = 200.; ///< domain depth / a; far boundary at ambient
 } // namespace
 
-ContactHeat::ContactHeat(double radius, double layerThickness, const HeatMaterials& materials, double dt)
+ContactHeat::ContactHeat(double radius, double layerThickness, const HeatMaterials& materials, double dt,
+                         const HeatGrid& grid)
     : radius_(radius), delta_(layerThickness), dt_(dt), length_(8.0 * radius / (3.0 * std::numbers::pi)),
-      materials_(materials)
+      materials_(materials), grid_(grid)
 {
     const double area = std::numbers::pi * radius * radius;
     contactCap_ = materials.layer.volumetricHeatCapacity * area * layerThickness;
@@ -37,11 +37,11 @@ ContactHeat::Side ContactHeat::makeSide(const physics::ThermalMaterial& m)
     { return m.conductivity * area / (l * (1.0 / (1.0 + x1 / l) - 1.0 / (1.0 + x2 / l))); };
 
     std::vector<double> x{0.0};
-    double h = 0.5 * std::sqrt(m.diffusivity() * dt_);
+    double h = grid_.surfaceCell * std::sqrt(m.diffusivity() * dt_);
     while (x.back() < kDepthPerRadius * radius_)
     {
         x.push_back(x.back() + h);
-        h *= kGrowth;
+        h *= grid_.growth;
     }
     Side s;
     const std::size_t n = x.size() - 1; // nodes 1..n-1 are free, x[n] is the ambient boundary
@@ -103,7 +103,8 @@ ContactHeat::Prediction ContactHeat::predict(double slidingSpeed) noexcept
     }
     forward(moving_, invDt);
     forward(stationary_, invDt);
-    advection_ = materials_.layer.volumetricHeatCapacity * radius_ * delta_ * std::abs(slidingSpeed);
+    advection_ = materials_.layer.volumetricHeatCapacity * grid_.advectionWidth * radius_ * delta_ *
+                 std::abs(slidingSpeed);
     // The moving side's half cell in the contact node is washed out like the rest of that side.
     pivot0_ = contactCap_ * invDt + advection_ + moving_.halfCell * washout + moving_.contactLoad +
               stationary_.contactLoad;
@@ -142,7 +143,8 @@ double ContactHeat::steadyRise(double speed) const
     Side moving = moving_, stationary = stationary_;
     reduce(moving, 0.0, std::abs(speed) / radius_);
     reduce(stationary, 0.0, 0.0);
-    const double adv = materials_.layer.volumetricHeatCapacity * radius_ * delta_ * std::abs(speed);
+    const double adv =
+        materials_.layer.volumetricHeatCapacity * grid_.advectionWidth * radius_ * delta_ * std::abs(speed);
     return 1.0 /
            (adv + moving.halfCell * std::abs(speed) / radius_ + moving.contactLoad + stationary.contactLoad);
 }
@@ -151,7 +153,7 @@ double ContactHeat::continuumConductance(double speed) const
 {
     const double v = std::abs(speed), a = radius_;
     const double pi = std::numbers::pi;
-    return materials_.layer.volumetricHeatCapacity * a * delta_ * v +
+    return materials_.layer.volumetricHeatCapacity * grid_.advectionWidth * a * delta_ * v +
            3.0 * pi * pi / 8.0 * a * (materials_.stationary.conductivity + materials_.moving.conductivity) +
            pi * a * a * materials_.moving.effusivity() * std::sqrt(v / a);
 }

@@ -11,7 +11,7 @@
 // widens with depth, A(x) = pi a^2 (1 + x/l)^2 with l = 8a/(3 pi): at audio time scales (depth << a) that is
 // 1-D conduction through the contact disc, and in steady state it has exactly the disc's mean steady
 // conductance (3 pi^2/8) K a ([Notes] eq. 2.7, the integral of the disc Green's function). The grid is
-// geometric (half a diffusion length of one step at the surface, x1.25 per node, 200 a deep).
+// geometric (by default half a diffusion length of one step at the surface, x1.25 per node; 200 a deep).
 //
 // The moving solid conducts like the stationary one while the contact sticks; while it slides, its surface
 // patch is carried away and replaced by fresh material at ambient, which this model lumps as a washout of
@@ -37,11 +37,20 @@ struct HeatMaterials
     physics::ThermalMaterial moving;     ///< the rod or hair that slides through the contact
 };
 
+/// The discretisation's own choices (a generator family's member draws them; GeneratorMember.h).
+struct HeatGrid
+{
+    double surfaceCell = 0.5;    ///< first cell, x one step's diffusion length sqrt(D dt)
+    double growth = 1.25;        ///< spacing ratio from node to node
+    double advectionWidth = 1.0; ///< the width of rosin carried through the contact, x its radius
+};
+
 class ContactHeat
 {
   public:
     /// A contact of radius a (m) and layer thickness delta (m), stepped at dt (s).
-    ContactHeat(double radius, double layerThickness, const HeatMaterials& materials, double dt);
+    ContactHeat(double radius, double layerThickness, const HeatMaterials& materials, double dt,
+                const HeatGrid& grid = {});
 
     /// Contact temperature rise of this step as free + perWatt x P.
     struct Prediction
@@ -86,6 +95,7 @@ class ContactHeat
 
     double radius_, delta_, dt_, length_;
     HeatMaterials materials_;
+    HeatGrid grid_;
     double contactCap_ = 0.0;
     Side moving_, stationary_;
     double contact_ = 0.0;

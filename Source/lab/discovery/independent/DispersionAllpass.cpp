@@ -13,7 +13,6 @@ namespace
 // 10 kHz within 1 cent for the cello D at 88.2 kHz (96 sections: 3 cents; 24 sections fitted to 10 kHz:
 // 10 cents). Fewer are used when they already fit within kGoodCents.
 constexpr int kSectionChoices[] = {8, 16, 32, 64, 96, 128};
-constexpr double kFitTopHz = 10000.0;
 constexpr double kGoodCents = 0.3;
 
 double sectionDelay(double a, double w)
@@ -50,11 +49,11 @@ double bestCoefficient(int m, const std::vector<double>& w, const std::vector<do
 } // namespace
 
 DispersionDesign designDispersion(double loopSamples, double f0, double B, double sampleRate,
-                                  const std::function<double(double)>& otherDelay)
+                                  const std::function<double(double)>& otherDelay, double fitTopHz)
 {
     if (!(B > 0.0))
         return {};
-    const double top = std::min(kFitTopHz, 0.4 * sampleRate);
+    const double top = std::min(fitTopHz, 0.4 * sampleRate);
     std::vector<double> w, need;
     for (int n = 1; n * f0 * std::sqrt(1.0 + B * n * n) < top; ++n)
     {

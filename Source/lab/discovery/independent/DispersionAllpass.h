@@ -26,8 +26,10 @@ struct DispersionDesign
 /// For a loop of `loopSamples` at f0 with inharmonicity B (B = pi^2 EI / (P L^2)). B <= 0: no sections.
 /// `otherDelay` (samples at f Hz, may be empty): the phase delay of the loop's other filters (the loss
 /// filters), whose change with frequency the cascade makes up for too.
+/// `fitTopHz`: the partials below it are fitted (10 kHz by default; never above 0.4 sampleRate).
 DispersionDesign designDispersion(double loopSamples, double f0, double inharmonicity, double sampleRate,
-                                  const std::function<double(double)>& otherDelay = {});
+                                  const std::function<double(double)>& otherDelay = {},
+                                  double fitTopHz = 10000.0);
 
 class DispersionAllpass
 {

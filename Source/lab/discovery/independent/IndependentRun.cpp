@@ -29,8 +29,8 @@ const std::vector<double>& traceChannel(const TrialTrace& t, const std::string& 
 std::function<CleanTrial(std::size_t)> makeWorker(const SynthPlan& plan, const IndependentTruth& truth)
 {
     const double fs = plan.dataset.sampleRate;
-    const IndependentRig rig = rigFromPlan(plan, truth.nuisance, truth.effects);
-    auto sim = std::make_shared<IndependentTrialSimulator>(rig, kIndependentOversampling * fs);
+    const IndependentRig rig = rigFromPlan(plan, truth.nuisance, truth.effects, truth.member);
+    auto sim = std::make_shared<IndependentTrialSimulator>(rig, truth.member.oversampling * fs);
     return [sim, &plan, &truth, fs](std::size_t i)
     {
         const TrialSettings& actual = plan.actual[i];
@@ -44,7 +44,7 @@ std::function<CleanTrial(std::size_t)> makeWorker(const SynthPlan& plan, const I
                                         ? std::vector<double>(trace.bowVelocity.size(), actual.bowForce)
                                         : traceChannel(trace, name);
             x = acquire(x, sim->internalRate(), truth.startDelays[i], truth.chain.cornerHz,
-                        truth.chain.gains[c]);
+                        truth.chain.gains[c], truth.member.oversampling, truth.member.antiAliasOrder);
             x.resize(samples, x.empty() ? 0.0 : x.back());
             if (name == "bridgeForce")
                 for (double v : x)
@@ -83,6 +83,7 @@ IndependentTruth independentTruth(const SynthPlan& plan)
 {
     IndependentTruth t;
     t.seed = plan.seed;
+    t.member = generatorMember(plan.generatorMember);
     t.nuisance = drawNuisance(plan.seed);
     t.effects = drawOwnEffects(plan);
     t.channels = plan.dataset.channels;
@@ -94,7 +95,10 @@ IndependentTruth independentTruth(const SynthPlan& plan)
 
 std::vector<std::pair<std::string, double>> IndependentTruth::values() const
 {
-    std::vector<std::pair<std::string, double>> v{{"generator.oversampling", kIndependentOversampling}};
+    std::vector<std::pair<std::string, double>> v{{"generator.oversampling", member.oversampling}};
+    if (member.number != 0)
+        for (const auto& [k, x] : member.values())
+            v.push_back({"generator." + k, x});
     for (const auto& [k, x] : nuisance.values())
         v.push_back({"nuisance." + k, x});
     for (const auto& [k, x] : effects.values())
@@ -109,7 +113,9 @@ nlohmann::ordered_json IndependentTruth::toJson() const
     nlohmann::ordered_json j;
     j["generator"] = kIndependentGenerator;
     j["seed"] = seed;
-    j["oversampling"] = kIndependentOversampling;
+    j["oversampling"] = member.oversampling;
+    if (member.number != 0)
+        j["member"] = object(member.values());
     j["nuisance"] = object(nuisance.values());
     j["effects"] = object(effects.values());
     j["chain"] = object(chain.values(channels));
@@ -120,7 +126,7 @@ nlohmann::ordered_json IndependentTruth::toJson() const
 void runIndependentSynthData(SynthPlan& plan, unsigned threads, const MeasuredTrialSink& sink)
 {
     const IndependentTruth truth = independentTruth(plan);
-    (void)rigFromPlan(plan, truth.nuisance, truth.effects); // throws before any thread starts
+    (void)rigFromPlan(plan, truth.nuisance, truth.effects, truth.member); // throws before any thread starts
     const SynthPlan& constPlan = plan;
     runPilotFirst(
         plan, threads, [&constPlan, &truth] { return makeWorker(constPlan, truth); },

@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "lab/discovery/independent/GeneratorMember.h"
 #include "lab/discovery/independent/LabChain.h"
 #include "lab/discovery/independent/Nuisance.h"
 #include "lab/discovery/independent/OwnEffects.h"
@@ -23,23 +24,27 @@ namespace rosin::discovery
 {
 
 inline constexpr const char* kIndependentGenerator = "rosin-independent/1";
-/// The string is stepped at this multiple of the dataset's rate, then low-passed and decimated.
+/// The string is stepped at this multiple of the dataset's rate, then low-passed and decimated (the nominal
+/// design's; a family member draws its own, GeneratorMember.h).
 inline constexpr int kIndependentOversampling = 2;
 
 /// What the independent generator draws for a plan, beyond the plan itself (for the truth file).
 struct IndependentTruth
 {
     std::uint64_t seed = 0;
+    GeneratorMember member; ///< the family member (plan.generatorMember)
     Nuisance nuisance;
     OwnEffects effects;
     ChainDraw chain;
     std::vector<Channel> channels;   ///< the dataset's, to name the gains
     std::vector<double> startDelays; ///< s, per trial
 
-    /// Flat key/value list: "generator.oversampling", "nuisance.tension", "effect.junction-growth.gain",
-    /// "chain.antiAliasCornerHz", "chain.gain.bridgeForce", ... (start delays not included).
+    /// Flat key/value list: "generator.oversampling", "generator.member", ..., "nuisance.tension",
+    /// "effect.junction-growth.gain", "chain.antiAliasCornerHz", "chain.gain.bridgeForce", ... (start delays
+    /// not included).
     std::vector<std::pair<std::string, double>> values() const;
-    /// {"generator", "seed", "nuisance": {...}, "effects": {...}, "chain": {...}, "startDelays": [...]}.
+    /// {"generator", "seed", "oversampling", "member": {...}, "nuisance": {...}, "effects": {...},
+    /// "chain": {...}, "startDelays": [...]}.
     nlohmann::ordered_json toJson() const;
 };
 

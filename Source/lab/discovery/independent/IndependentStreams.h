@@ -11,5 +11,6 @@ inline constexpr RandomStream kOwnEffect = static_cast<RandomStream>(102);  ///<
 inline constexpr RandomStream kChain = static_cast<RandomStream>(103);      ///< one per dataset
 inline constexpr RandomStream kStartDelay = static_cast<RandomStream>(104); ///< index: the trial
 inline constexpr RandomStream kNoise = static_cast<RandomStream>(105);      ///< index: the trial
+inline constexpr RandomStream kMember = static_cast<RandomStream>(106);     ///< seeded by the member number
 
 } // namespace rosin::discovery::independent_streams

@@ -38,7 +38,8 @@ double bowSpeed(const Gesture& gesture, double t)
 }
 } // namespace
 
-IndependentRig rigFromPlan(const SynthPlan& plan, const Nuisance& nuisance, const OwnEffects& effects)
+IndependentRig rigFromPlan(const SynthPlan& plan, const Nuisance& nuisance, const OwnEffects& effects,
+                           const GeneratorMember& member)
 {
     const config::Preset& p = plan.model.preset;
     if (p.rig)
@@ -50,6 +51,10 @@ IndependentRig rigFromPlan(const SynthPlan& plan, const Nuisance& nuisance, cons
                                     p.friction + "\"");
     IndependentRig rig;
     rig.string = nuisance.apply(plan.dataset.rig.string);
+    rig.string.torsionalWaveSpeed *= member.torsionalWaveSpeed;
+    rig.string.torsionalQ *= member.torsionalQ;
+    rig.string.torsionalImpedance *= member.torsionalImpedance;
+    rig.member = member;
     rig.body = physics::bodyByName(plan.dataset.rig.body.value_or("rigid"));
     rig.torsion = p.torsion;
     rig.bendingStiffness = p.bendingStiffness;
@@ -101,6 +106,8 @@ WaveguideSettings IndependentTrialSimulator::waveguide(double beta) const
     w.torsionalImpedance = s.torsionalImpedance;
     w.body = rig_.body;
     w.sampleRate = rate_;
+    w.lossFitHarmonic = rig_.member.lossFitHarmonic;
+    w.dispersionFitTopHz = rig_.member.dispersionFitTopHz;
     return w;
 }
 
@@ -109,7 +116,8 @@ const TrialTrace& IndependentTrialSimulator::run(const TrialSettings& settings)
     const double dt = 1.0 / rate_;
     const double area = contactArea(settings.bowForce);
     WaveguideString string(waveguide(settings.beta));
-    ContactHeat heat(std::sqrt(area / std::numbers::pi), rig_.layerThickness, rig_.materials, dt);
+    const HeatGrid grid{rig_.member.heatSurfaceCell, rig_.member.heatGridGrowth, rig_.member.advectionWidth};
+    ContactHeat heat(std::sqrt(area / std::numbers::pi), rig_.layerThickness, rig_.materials, dt, grid);
     ContactFriction friction(table_, area, rig_.effects, dt);
 
     const auto n = static_cast<std::size_t>(std::llround(settings.seconds * rate_));

@@ -8,6 +8,7 @@
 
 #include "lab/discovery/TrialSimulator.h"
 #include "lab/discovery/independent/ContactFriction.h"
+#include "lab/discovery/independent/GeneratorMember.h"
 #include "lab/discovery/independent/Nuisance.h"
 #include "lab/discovery/independent/WaveguideString.h"
 
@@ -33,12 +34,16 @@ struct IndependentRig
     CalibrationContact calibration;
     HeatMaterials materials;
     OwnEffects effects;
+    GeneratorMember member; ///< the family member's numerics (its constants are applied to `string`)
 };
 
 /// The rig of a plan: its preset's string, body and contact (as stated), with the nuisance applied and the
 /// plan's hidden effects in their own forms. Throws std::invalid_argument for a preset this generator does
 /// not model (a friction law other than the plastic one without a hidden breakaway, or an oscillator rig).
-IndependentRig rigFromPlan(const SynthPlan& plan, const Nuisance& nuisance, const OwnEffects& effects);
+/// The member's torsional constants scale the string's; its body choice is the plan's to state
+/// (applyMemberRig), so the rig keeps the plan's body.
+IndependentRig rigFromPlan(const SynthPlan& plan, const Nuisance& nuisance, const OwnEffects& effects,
+                           const GeneratorMember& member = {});
 
 /// What one trial did, at the internal rate.
 struct TrialTrace

@@ -1,5 +1,6 @@
 #include "lab/discovery/independent/LabChain.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -53,11 +54,16 @@ std::vector<std::pair<std::string, double>> ChainDraw::values(const std::vector<
     return v;
 }
 
-void antiAliasLowPass(std::vector<double>& x, double cornerHz, double sampleRate)
+void antiAliasLowPass(std::vector<double>& x, double cornerHz, double sampleRate, int order)
 {
-    // 4th order: poles at angles pi/8 and 3 pi/8 from the imaginary axis, q = 1 / (2 cos).
-    lowPassBiquad(x, cornerHz, sampleRate, 1.0 / (2.0 * std::cos(std::numbers::pi / 8.0)));
-    lowPassBiquad(x, cornerHz, sampleRate, 1.0 / (2.0 * std::cos(3.0 * std::numbers::pi / 8.0)));
+    // Pole pair k at the angle (2k + 1) pi / (2 order) from the imaginary axis, q = 1 / (2 cos): for the 4th
+    // order pi/8 and 3 pi/8.
+    for (int k = 0; k < order / 2; ++k)
+    {
+        const double angle =
+            static_cast<double>(2 * k + 1) * std::numbers::pi / static_cast<double>(2 * order);
+        lowPassBiquad(x, cornerHz, sampleRate, 1.0 / (2.0 * std::cos(angle)));
+    }
 }
 
 void firstOrderHighPassBilinear(std::vector<double>& x, double cornerHz, double sampleRate)
@@ -75,16 +81,17 @@ void firstOrderHighPassBilinear(std::vector<double>& x, double cornerHz, double 
 }
 
 std::vector<double> acquire(const std::vector<double>& internal, double internalRate, double delay,
-                            double cornerHz, double gain)
+                            double cornerHz, double gain, int decimation, int order)
 {
     const auto shift = static_cast<std::size_t>(std::llround(delay * internalRate));
     std::vector<double> x(internal.size(), 0.0);
     for (std::size_t i = shift; i < x.size(); ++i)
         x[i] = internal[i - shift];
-    antiAliasLowPass(x, cornerHz, internalRate);
+    antiAliasLowPass(x, cornerHz, internalRate, order);
+    const auto step = static_cast<std::size_t>(std::max(1, decimation));
     std::vector<double> out;
-    out.reserve(x.size() / 2);
-    for (std::size_t i = 0; i < x.size(); i += 2)
+    out.reserve(x.size() / step);
+    for (std::size_t i = 0; i < x.size(); i += step)
         out.push_back(gain * x[i]);
     return out;
 }

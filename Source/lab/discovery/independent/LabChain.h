@@ -2,8 +2,9 @@
 // The independent generator's measurement chain, between the simulated string (internal rate, twice the
 // dataset's) and the dataset's samples, with what a real acquisition has and dataset.json does not state:
 //   1. a start delay: the gesture starts up to 1 ms after the record's time zero (per trial);
-//   2. the converter's anti-aliasing low-pass, 4th-order Butterworth with its corner drawn in 8-16 kHz (for a
-//      44.1 kHz dataset; scaled with the rate otherwise), then every second sample;
+//   2. the converter's anti-aliasing low-pass, a Butterworth (4th order; a family member may have 2nd or 6th)
+//      with its corner drawn in 8-16 kHz (for a 44.1 kHz dataset; scaled with the rate otherwise), then every
+//      second (third, fourth: the member's oversampling) sample;
 //   3. a gain error per channel (+-3 %);
 //   4. the stated first-order high-pass (sensor.highpassHz) on force channels, by the bilinear transform;
 //   5. white noise of the stated sensor.noiseRms on every channel;
@@ -34,14 +35,15 @@ double drawStartDelay(std::uint64_t seed, std::size_t trial);
 inline constexpr double kGainTolerance = 0.03;
 inline constexpr double kMaxStartDelay = 1e-3; ///< s
 
-/// 4th-order Butterworth low-pass (two bilinear biquads, corner pre-warped), in place, from rest.
-void antiAliasLowPass(std::vector<double>& x, double cornerHz, double sampleRate);
+/// Butterworth low-pass of an even `order` (order / 2 bilinear biquads, corner pre-warped), in place, from
+/// rest.
+void antiAliasLowPass(std::vector<double>& x, double cornerHz, double sampleRate, int order = 4);
 /// First-order high-pass (bilinear, pre-warped), in place, from rest.
 void firstOrderHighPassBilinear(std::vector<double>& x, double cornerHz, double sampleRate);
 
-/// Steps 1-3 on one channel at the internal rate (2 x dataset rate): delayed by `delay` s, low-passed,
-/// decimated by 2 and scaled by `gain`.
+/// Steps 1-3 on one channel at the internal rate (`decimation` x the dataset's): delayed by `delay` s,
+/// low-passed (Butterworth of `order`), decimated and scaled by `gain`.
 std::vector<double> acquire(const std::vector<double>& internal, double internalRate, double delay,
-                            double cornerHz, double gain);
+                            double cornerHz, double gain, int decimation = 2, int order = 4);
 
 } // namespace rosin::discovery

@@ -8,14 +8,15 @@
 namespace rosin::discovery
 {
 
-OnePoleLoss segmentLoss(const LossLaw& eta, double tau, double referenceHz, double sampleRate)
+OnePoleLoss segmentLoss(const LossLaw& eta, double tau, double referenceHz, double sampleRate,
+                        double harmonic)
 {
-    const double f2 = std::min(36.0 * referenceHz, sampleRate / 5.0);
+    const double f2 = std::min(harmonic * referenceHz, sampleRate / 5.0);
     return OnePoleLoss(eta, tau, referenceHz, std::max(f2, 1.5 * referenceHz), sampleRate);
 }
 
 WaveguideSegment::WaveguideSegment(double roundTripSamples, const LossLaw& eta, double referenceHz,
-                                   double sampleRate, DispersionAllpass dispersion)
+                                   double sampleRate, DispersionAllpass dispersion, double lossFitHarmonic)
     : out_(roundTripSamples + 8), back_(roundTripSamples + 8), dispersion_(std::move(dispersion))
 {
     // The loss is fitted at the reference (the string's fundamental, where decay is measured) and at its
@@ -25,7 +26,7 @@ WaveguideSegment::WaveguideSegment(double roundTripSamples, const LossLaw& eta, 
     // law makes it, a difference of numerics that would read as a missing effect.
     const double tau = roundTripSamples / sampleRate;
     if (eta)
-        loss_ = segmentLoss(eta, tau, referenceHz, sampleRate);
+        loss_ = segmentLoss(eta, tau, referenceHz, sampleRate, lossFitHarmonic);
     // The filters' delay at the reference comes out of the two lines, shared evenly (the dispersion cascade
     // may take half of the segment). A segment shorter than the line's minimum (torsion near the bridge at
     // small beta) runs slightly long.
@@ -50,17 +51,21 @@ WaveguideString::WaveguideString(const WaveguideSettings& s)
     if (s.transverseLoss)
     {
         const double loop = 2.0 * s.length / c;
-        const OnePoleLoss bridgeLoss = segmentLoss(s.transverseLoss, s.beta * loop, f0_, fs);
-        const OnePoleLoss nutLoss = segmentLoss(s.transverseLoss, (1.0 - s.beta) * loop, f0_, fs);
+        const OnePoleLoss bridgeLoss =
+            segmentLoss(s.transverseLoss, s.beta * loop, f0_, fs, s.lossFitHarmonic);
+        const OnePoleLoss nutLoss =
+            segmentLoss(s.transverseLoss, (1.0 - s.beta) * loop, f0_, fs, s.lossFitHarmonic);
         lossDelay = [bridgeLoss, nutLoss](double f)
         { return bridgeLoss.phaseDelay(f) + nutLoss.phaseDelay(f); };
     }
-    const DispersionDesign design = designDispersion(2.0 * s.length / c * fs, f0_, B, fs, lossDelay);
+    const DispersionDesign design =
+        designDispersion(2.0 * s.length / c * fs, f0_, B, fs, lossDelay, s.dispersionFitTopHz);
     const int bridgeSections = static_cast<int>(std::lround(s.beta * design.sections));
     bridge_ = WaveguideSegment(2.0 * s.beta * s.length / c * fs, s.transverseLoss, f0_, fs,
-                               DispersionAllpass(design, bridgeSections, fs));
-    nut_ = WaveguideSegment(2.0 * (1.0 - s.beta) * s.length / c * fs, s.transverseLoss, f0_, fs,
-                            DispersionAllpass(design, design.sections - bridgeSections, fs));
+                               DispersionAllpass(design, bridgeSections, fs), s.lossFitHarmonic);
+    nut_ =
+        WaveguideSegment(2.0 * (1.0 - s.beta) * s.length / c * fs, s.transverseLoss, f0_, fs,
+                         DispersionAllpass(design, design.sections - bridgeSections, fs), s.lossFitHarmonic);
     admittance_ = 1.0 / (2.0 * z0_);
     if (torsion_)
     {

@@ -34,13 +34,16 @@ struct WaveguideSettings
     double torsionalImpedance = 1.8; ///< kg/s, surface-referred
     physics::BodyParameters body;    ///< no modes: rigid bridge
     double sampleRate = 88200.0;
+    double lossFitHarmonic = 36.0;       ///< the loss filters' second fit frequency, x f0 (segmentLoss)
+    double dispersionFitTopHz = 10000.0; ///< the dispersion cascade fits the partials below this
 };
 
 /// One side of the bow: a line to the far end (integer delay), the segment's loss, and a line back
 /// (fractional delay, shortened by the loss filter's phase delay at referenceHz).
 /// The loss filter of a segment whose round trip takes `tau` s: fitted at the reference (the string's
-/// fundamental) and at its 36th partial.
-OnePoleLoss segmentLoss(const LossLaw& eta, double tau, double referenceHz, double sampleRate);
+/// fundamental) and at its `harmonic`-th partial (36 by default).
+OnePoleLoss segmentLoss(const LossLaw& eta, double tau, double referenceHz, double sampleRate,
+                        double harmonic = 36.0);
 
 class WaveguideSegment
 {
@@ -48,7 +51,7 @@ class WaveguideSegment
     WaveguideSegment() = default;
     /// `dispersion`: the stiff string's allpass, placed in this segment (empty: none).
     WaveguideSegment(double roundTripSamples, const LossLaw& eta, double referenceHz, double sampleRate,
-                     DispersionAllpass dispersion = {});
+                     DispersionAllpass dispersion = {}, double lossFitHarmonic = 36.0);
 
     /// The wave reaching the far end at step n, after the segment's loss (and dispersion).
     double incidentAtEnd(std::size_t n) noexcept

@@ -138,6 +138,7 @@ SynthPlan planSynthData(const SynthSettings& settings)
     const scan::ScanSpec& s = settings.scan;
     SynthPlan plan;
     plan.seed = settings.seed;
+    plan.generatorMember = settings.generatorMember;
     plan.presetName = settings.preset.name;
     plan.model.preset = settings.preset;
     for (const auto& request : settings.effects)

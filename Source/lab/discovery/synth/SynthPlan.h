@@ -46,6 +46,8 @@ struct SynthSettings
     std::vector<EffectRequest> effects; ///< empty: no hidden effect
     std::uint64_t seed = 0;
     bool allChannels = false; ///< also frictionForce and bowPointVelocity
+    /// The independent generator's family member (independent/GeneratorMember.h; 0: its nominal design).
+    unsigned generatorMember = 0;
 };
 
 struct HiddenEffect
@@ -64,6 +66,7 @@ struct SynthPlan
     SimulationModel model;                         ///< the preset with the hidden effects applied
     std::vector<HiddenEffect> effects;
     std::uint64_t seed = 0;
+    unsigned generatorMember = 0; ///< as SynthSettings
     std::string presetName;
 };
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "lab/discovery/independent/IndependentRun.h"
@@ -86,7 +87,9 @@ TEST(IndependentRun, TruthRecordsTheDrawsWithinTheirRanges)
     EXPECT_EQ(t.startDelays.size(), plan.dataset.trials.size());
 }
 
-double gainAt(void (*filter)(std::vector<double>&, double, double), double corner, double f, double rate)
+using Filter = std::function<void(std::vector<double>&, double, double)>;
+
+double gainAt(const Filter& filter, double corner, double f, double rate)
 {
     std::vector<double> x(static_cast<std::size_t>(rate * 20.0 / std::min(f, 50.0)) + 40000);
     for (std::size_t i = 0; i < x.size(); ++i)
@@ -98,14 +101,35 @@ double gainAt(void (*filter)(std::vector<double>&, double, double), double corne
     return 20.0 * std::log10(peak);
 }
 
+Filter butterworth(int order)
+{
+    return [order](std::vector<double>& x, double corner, double rate)
+    { antiAliasLowPass(x, corner, rate, order); };
+}
+
 TEST(IndependentRun, ChainFiltersHaveTheirAnalyticCorners)
 {
     const double rate = 88200.0;
-    EXPECT_NEAR(gainAt(antiAliasLowPass, 12000.0, 12000.0, rate), -3.01, 0.05);
+    EXPECT_NEAR(gainAt(butterworth(4), 12000.0, 12000.0, rate), -3.01, 0.05);
     // 4th order: -24 dB per octave well above the corner (bilinear: a little more).
-    EXPECT_LT(gainAt(antiAliasLowPass, 8000.0, 32000.0, rate), -48.0);
-    EXPECT_NEAR(gainAt(antiAliasLowPass, 12000.0, 1000.0, rate), 0.0, 0.01);
+    EXPECT_LT(gainAt(butterworth(4), 8000.0, 32000.0, rate), -48.0);
+    EXPECT_NEAR(gainAt(butterworth(4), 12000.0, 1000.0, rate), 0.0, 0.01);
     EXPECT_NEAR(gainAt(firstOrderHighPassBilinear, 0.5, 0.5, 4410.0), -3.01, 0.05);
+}
+
+// The family's other orders: -3 dB at the corner, and two octaves above it at least 6 dB per octave and
+// order (|H|^2 = 1 / (1 + (f / fc)^(2 N)) of the analog prototype: -24.1 dB for N = 2, -72.2 for N = 6).
+TEST(IndependentRun, ButterworthOfEveryFamilyOrderHasItsAnalyticCornerAndSlope)
+{
+    const double rate = 132300.0;
+    for (int order : {2, 6})
+    {
+        SCOPED_TRACE(order);
+        EXPECT_NEAR(gainAt(butterworth(order), 10000.0, 10000.0, rate), -3.01, 0.05);
+        const double analog = -10.0 * std::log10(1.0 + std::pow(4.0, 2.0 * order));
+        EXPECT_LT(gainAt(butterworth(order), 8000.0, 32000.0, rate), analog + 0.5);
+        EXPECT_NEAR(gainAt(butterworth(order), 10000.0, 500.0, rate), 0.0, 0.01);
+    }
 }
 
 } // namespace ROSIN_FILE_LOCAL
