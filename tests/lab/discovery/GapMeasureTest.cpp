@@ -144,8 +144,9 @@ TEST(GapMeasure, AFitGainsNothingByLosingTheMotionWhereItWasWrong)
 }
 
 // The verdict's tolerance: a tilt 1.5 dB off in every trial against a scatter of 0.5 dB is significant in
-// units of the scatter alone (z = 3) and within the model-form tolerance (z = 1.5 / sqrt(0.5^2 + 1.5^2) =
-// 0.95); the regime, a category, keeps its mismatch rate.
+// units of the scatter alone (z = 3) and within the model-form tolerance of at least 1.5 dB (z <= 1.5 /
+// sqrt(0.5^2 + 1.5^2) = 0.95); the regime, a category, keeps its mismatch rate. A feature the tolerance does
+// not cover (tau 0: the slip fraction, which no tuning control recorded) keeps its sigma.
 TEST(ModelFormTolerance, WidensTheVerdictsSigmaInQuadrature)
 {
     FeatureScatter scatter = unitScatter(30);
@@ -154,6 +155,9 @@ TEST(ModelFormTolerance, WidensTheVerdictsSigmaInQuadrature)
     const FeatureScatter wide = withModelFormTolerance(scatter);
     EXPECT_NEAR(wide.sigma[kHarmonicTilt], std::hypot(0.5, modelFormTolerance()[kHarmonicTilt]), 1e-12);
     EXPECT_DOUBLE_EQ(wide.sigma[kRegime], 0.25);
+    ASSERT_GE(modelFormTolerance()[kHarmonicTilt], 1.5);
+    ASSERT_EQ(modelFormTolerance()[kSlipFraction], 0.0);
+    EXPECT_DOUBLE_EQ(wide.sigma[kSlipFraction], scatter.sigma[kSlipFraction]);
     std::vector<TrialFeatures> measured(30), simulated(30);
     std::vector<std::size_t> trials;
     for (std::size_t t = 0; t < 30; ++t)

@@ -3,25 +3,26 @@
 // model-form tolerance of the verdict. The verdict asks whether what remains after calibration and
 // the adopted effects is more than the measurement's scatter explains; against a measurement that no model
 // of this one's form made, "the scatter" must include what any second model with the same physics would
-// leave. Measured, not assumed: Rosin against the project's independent generator (a digital waveguide with
-// its own heat balance, `rosin synth-data --generator independent`) on Schelleng scans (12 x 12) with nothing
-// hidden, drawn with seeds 17 and 23, which neither the discover page's tables nor a test uses: tau^2 =
-// mean(d^2 - sigma^2) over the 50 trials where the calibrated model and the measurement both show Helmholtz
-// motion, d = measured - model, sigma the trial's scatter. The pitch's part is not the tension: seed 17's
-// string plays 2.66 cents flatter than the calibrated model (mean; tension x1.02, drawn x1.0185), yet a
-// tension step matching the median pitch difference did not lower the training objective on seeds 17, 23
-// or 31 (tried in the calibration, withdrawn).
-// The steady level (read in every regime) was first left at 0: over seeds 17 and 23 its differences stayed
-// within the scatter (mean z^2 0.85 over 280 trials, as calibrated then). Re-measured
-// over six sets (seeds 17, 23, 41, 43, 47, 53; none is the discover page's seed 31 or a test's), calibrated
-// as rosin discover calibrates now, with the sigma that includes each trial's sensitivity: tau^2 per seed
-// 0.33, -0.20, 0.53, 0.16, -0.18, 0.30 dB^2 (140 trials each), pooled 0.156, tau 0.4 dB; the same six sets
-// give 2.0 cents for the pitch and 1.50 dB for the tilt (pooled over 152 trials), as below. Without it the
-// verdict on such a set turned on the calibration's pick between near-equal optima (seed 43: p 9e-5; seed
-// 31: 0.0075 on x86-64-v4, 0.16 on x86-64-v3). Features of the attack (first slip,
-// transient) are left at 0: on Guettler scans with nothing hidden the calibrated model is already within
-// their scatter. It is a calibration of the verdict against one second model, not a reproduction of
-// anything; a bowing machine will differ from both models by at least this much.
+// leave. Measured, not assumed, and never fitted to the dataset being judged: Rosin against the tuning split
+// of the independent generator's family (`rosin synth-data --generator independent --member K`, members
+// 1-20: other numerics, constants, chains and rigs, GeneratorMember.h) with nothing hidden, a Guettler scan
+// (10 x 10 x 2, betas 0.0899 and 0.12) and a Schelleng scan (12 x 12) of each, seeds 201-220, calibrated as
+// rosin discover calibrates. Per feature and dataset, tau is the smallest widening at which the verdict's own
+// statistic, the mean of min(z^2, 9), falls to its null value 1; the tolerance is the largest over the forty
+// datasets, so that every tuning member's control is clean (`Resources/scripts/model_form_tolerance.py`
+// prints the table from the datasets' maps.json). What sets each:
+//   * pitch 6.3 cents: mostly a constant offset, the generator's string drawn up to 1.5 % tenser and 1 %
+//     heavier than stated (the offsets of members 1-8 match the drawn constants within 0.6 cents on the
+//     Guettler scans). The calibration fits the tension, but the pre-slip rise and the first slip pin it and
+//     it stays at the stated value; a mass-per-length prior in the calibration did not move either;
+//   * harmonic tilt 2.4 dB: every member, 0.7-2.4 dB;
+//   * steady level 1.4 dB: 18 of 20 Schelleng controls, 0.5-1.3 dB;
+//   * first-slip time 2.2 ms, transient 3.1 periods, static friction 0.0099, jump 0.021, creep 0.0088: a few
+//     of the Guettler controls each (most leave them within the scatter); the largest first-slip time and
+//     jump come from member 12, whose control the search wrongly explains by extra internal damping.
+// The sealed split (members from 100) is scored with this table, never used to set it. It is a calibration
+// of the verdict against a family of second models, not a reproduction of anything; a bowing machine will
+// differ from both by at least this much.
 //
 // Only the verdict (no-significant-discrepancy or unexplained) uses it: fits, the paired test that names an
 // effect and the gaps reported stay in units of the measurement's own scatter, so a systematic misfit that
