@@ -16,7 +16,7 @@
 //     Guettler scans). The calibration fits the tension, but the pre-slip rise and the first slip pin it and
 //     it stays at the stated value; a mass-per-length prior in the calibration did not move either;
 //   * harmonic tilt 2.4 dB: every member, 0.7-2.4 dB;
-//   * steady level 1.4 dB: 18 of 20 Schelleng controls, 0.5-1.3 dB;
+//   * steady level 1.4 dB: 18 of 20 Schelleng controls, 0.4-1.3 dB;
 //   * first-slip time 2.2 ms, transient 3.1 periods, static friction 0.0099, jump 0.021, creep 0.0088: a few
 //     of the Guettler controls each (most leave them within the scatter); the largest first-slip time and
 //     jump come from member 12, whose control the search wrongly explains by extra internal damping.

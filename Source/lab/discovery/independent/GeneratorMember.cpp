@@ -31,6 +31,14 @@ GeneratorMember generatorMember(unsigned number)
     return m;
 }
 
+physics::StringParameters GeneratorMember::torsionOf(physics::StringParameters string) const
+{
+    string.torsionalWaveSpeed *= torsionalWaveSpeed;
+    string.torsionalQ *= torsionalQ;
+    string.torsionalImpedance *= torsionalImpedance;
+    return string;
+}
+
 void applyMemberRig(const GeneratorMember& member, config::Preset& preset)
 {
     if (!member.body)

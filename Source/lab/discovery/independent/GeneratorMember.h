@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/config/Preset.h"
+#include "core/physics/string/StringParameters.h"
 
 namespace rosin::discovery
 {
@@ -41,6 +42,8 @@ struct GeneratorMember
     bool body = true;                   ///< false: the rig stands on a rigid bridge (stated in dataset.json)
 
     std::vector<std::pair<std::string, double>> values() const;
+    /// `string` with this member's torsional constants.
+    physics::StringParameters torsionOf(physics::StringParameters string) const;
 };
 
 /// Member `number` of the family (0: the nominal design).

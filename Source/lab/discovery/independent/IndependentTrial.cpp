@@ -50,10 +50,7 @@ IndependentRig rigFromPlan(const SynthPlan& plan, const Nuisance& nuisance, cons
         throw std::invalid_argument("independent generator: models the plastic thermal law only, not \"" +
                                     p.friction + "\"");
     IndependentRig rig;
-    rig.string = nuisance.apply(plan.dataset.rig.string);
-    rig.string.torsionalWaveSpeed *= member.torsionalWaveSpeed;
-    rig.string.torsionalQ *= member.torsionalQ;
-    rig.string.torsionalImpedance *= member.torsionalImpedance;
+    rig.string = member.torsionOf(nuisance.apply(plan.dataset.rig.string));
     rig.member = member;
     rig.body = physics::bodyByName(plan.dataset.rig.body.value_or("rigid"));
     rig.torsion = p.torsion;

@@ -72,9 +72,7 @@ IndependentRig memberRig(const GeneratorMember& m)
 {
     IndependentRig rig = test::nominalRig({}, m.body);
     rig.member = m;
-    rig.string.torsionalWaveSpeed *= m.torsionalWaveSpeed;
-    rig.string.torsionalQ *= m.torsionalQ;
-    rig.string.torsionalImpedance *= m.torsionalImpedance;
+    rig.string = m.torsionOf(rig.string);
     return rig;
 }
 
