@@ -24,6 +24,7 @@
 #include "core/config/VoiceSetup.h"
 #include "core/gesture/BuiltinGestures.h"
 #include "core/gesture/GestureLimits.h"
+#include "core/physics/thermal/RosinMaterial.h"
 
 namespace rosin::cli
 {
@@ -40,7 +41,7 @@ struct RenderOptions
 {
     std::string gesture = "steady";
     std::string out = kDefaultOut;
-    std::optional<std::string> probe, preset, friction, body, output;
+    std::optional<std::string> probe, preset, friction, body, output, rosin;
     double sampleRate = kDefaultSampleRate;
     std::optional<double> scale;
     std::optional<LoopRequest> loop;
@@ -73,6 +74,8 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args)
             o.friction = v;
         else if (opt.name == "--body")
             o.body = v;
+        else if (opt.name == "--rosin")
+            o.rosin = v;
         else if (opt.name == "--sample-rate") // WAV headers store an integer rate
             o.sampleRate = parseNumberIn(opt.name, v, physics::limits::sampleRate);
         else if (opt.name == "--loop")
@@ -105,6 +108,11 @@ config::Preset choosePreset(const RenderOptions& o)
     {
         requireChoice("--body", *o.body, config::bodyNames());
         preset.body = *o.body;
+    }
+    if (o.rosin)
+    {
+        requireChoice("--rosin", *o.rosin, physics::rosinMaterialNames());
+        preset.rosin = *o.rosin;
     }
     return preset;
 }
@@ -221,6 +229,10 @@ const OptionTable& renderOptionTable()
          "replace the preset's friction law: classical, reconstructed, plastic,\nviscous, modified-bow, "
          "modified-rod"},
         {"--body", "BODY", "replace the preset's body: cello, violin, rigid"},
+        {"--rosin", "MATERIAL",
+         "replace the preset's rosin: handbook (the handbook constants), calibrated\n(rho c x " +
+             significant(physics::kCalibratedRosinHeatCapacityFactor, 3) +
+             ", fixed by [Smith2000]'s 44 Hz stick-slip)"},
         {"--sample-rate", "HZ", physics::limits::sampleRate.describe() + ", default 48000"},
         {"--loop", "FILE.png",
          "also draw the friction/velocity hysteresis loop ([Galluzzo2017] Figs. 20-21)\nand keep its samples "
@@ -238,7 +250,8 @@ HelpPage renderHelpPage()
     page.command = "render";
     page.usage = {
         "rosin render [--gesture SPEC|FILE.json] [--out FILE.wav] [--output WHAT] [--probe FILE.wav] "
-        "[--preset NAME|FILE.json] [--friction LAW] [--body BODY] [--sample-rate HZ] [--scale S] "
+        "[--preset NAME|FILE.json] [--friction LAW] [--body BODY] [--rosin MATERIAL] [--sample-rate HZ] "
+        "[--scale S] "
         "[--loop FILE.png [--loop-interval A:B]]",
         midiRenderUsage()};
     page.sections = {
@@ -315,7 +328,7 @@ int runRender(const std::vector<std::string>& args, std::ostream& out, std::ostr
 
     out << "preset " << preset.name << " (" << preset.source << "): string " << setup.voice.string.name
         << ", body " << preset.body << ", friction " << preset.friction << ", contact " << preset.contact
-        << "\n";
+        << ", rosin " << preset.rosin << "\n";
     out << "gesture " << o.gesture << ": " << script.segments.size() << " segment(s), " << bow.totalSamples()
         << " samples at " << o.sampleRate << " Hz (" << significant(script.totalSeconds(), 6) << " s)\n";
 

@@ -118,7 +118,7 @@ int renderRig(const config::Preset& preset, const config::VoiceSetup& setup, ges
     out << "preset " << preset.name << " (" << preset.source << "): oscillator rig "
         << significant(p.frequency, 6) << " Hz, Q " << significant(p.qualityFactor, 6) << ", modal mass "
         << significant(p.modalMass, 6) << " kg, friction " << preset.friction << ", contact "
-        << preset.contact << "\n";
+        << preset.contact << ", rosin " << preset.rosin << "\n";
     out << "gesture " << request.gesture << ": " << bow.totalSamples() << " samples at " << request.sampleRate
         << " Hz (" << significant(gestureSeconds, 6) << " s)\n";
 

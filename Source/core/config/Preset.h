@@ -55,6 +55,9 @@ struct Preset
     std::string friction = "plastic"; ///< a physics::frictionModelNames() entry
     std::string contact = "galluzzo"; ///< base contact: "galluzzo" or "schumacher" ([Galluzzo2017] Table 2)
     ContactOverrides contactOverrides;
+    /// physics::rosinMaterialNames(): "handbook", or "calibrated" (rho c fixed by [Smith2000]'s 44 Hz,
+    /// physics/thermal/RosinMaterial.h)
+    std::string rosin = "handbook";
     bool torsion = true;          ///< torsional modes on ([Galluzzo2017] Fig. 12e turns them off)
     bool bendingStiffness = true; ///< EI on ([Galluzzo2017] Fig. 12f turns it off)
     physics::BowParameters bow;   ///< ribbon width and hair ("bow"); default the seeds' rod: a rigid point

@@ -9,6 +9,7 @@
 #include "core/config/JsonObject.h"
 #include "core/config/VoiceSetup.h"
 #include "core/gesture/GestureLimits.h"
+#include "core/physics/thermal/RosinMaterial.h"
 
 #ifndef ROSIN_PRESET_DIR
 #define ROSIN_PRESET_DIR "presets"
@@ -270,7 +271,7 @@ Preset parsePreset(const nlohmann::json& root, const std::string& file, const st
     const JsonObject r(root, file, "");
     r.allowOnly({"format", "name", "description", "string", "body", "friction", "contact", "torsion",
                  "bendingStiffness", "ambientOffset", "beta", "outputLevel", "bodyResponse", "rig", "player",
-                 "radiationGains", "bow"});
+                 "radiationGains", "bow", "rosin"});
 
     Preset p = defaultPreset();
     p.source = file;
@@ -289,6 +290,7 @@ Preset parsePreset(const nlohmann::json& root, const std::string& file, const st
     p.body = r.optionalOneOf("body", bodyNames()).value_or(p.body);
     p.friction = r.optionalOneOf("friction", frictionNames()).value_or(p.friction);
     parseContact(r, p);
+    p.rosin = r.optionalOneOf("rosin", physics::rosinMaterialNames()).value_or(p.rosin);
     parseBow(r, p);
     p.torsion = r.optionalBool("torsion").value_or(p.torsion);
     p.bendingStiffness = r.optionalBool("bendingStiffness").value_or(p.bendingStiffness);

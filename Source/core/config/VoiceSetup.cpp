@@ -6,6 +6,7 @@
 #include "core/physics/body/BodyParameters.h"
 #include "core/physics/body/RadiationGains.h"
 #include "core/physics/rig/CantileverContact.h"
+#include "core/physics/thermal/RosinMaterial.h"
 
 namespace rosin::config
 {
@@ -42,6 +43,7 @@ VoiceSetup buildVoiceSetup(const Preset& preset)
     requireOneOf(preset, "body", preset.body, bodyNames());
     requireOneOf(preset, "friction", preset.friction, frictionNames());
     requireOneOf(preset, "contact", preset.contact, contactNames());
+    requireOneOf(preset, "rosin", preset.rosin, physics::rosinMaterialNames());
 
     VoiceSetup setup;
     setup.voice.string = preset.string;
@@ -62,6 +64,8 @@ VoiceSetup buildVoiceSetup(const Preset& preset)
     if (preset.contact == "cantilever")
         setup.contact.calibration = setup.contact.rig; // [Smith2000] calibrated on the rig's own contact
     setup.contact.ambientOffset = preset.ambientOffset;
+    setup.contact.materials = physics::withRosin(
+        setup.contact.materials, physics::rosinMaterial(physics::rosinMaterialFromName(preset.rosin)));
 
     setup.friction = physics::frictionModelFromName(preset.friction);
     return setup;

@@ -3,8 +3,11 @@
 
 #include "core/config/ConfigError.h"
 #include "core/config/PresetLoader.h"
+#include "core/config/RefusedPreset.h"
+#include "core/config/TempFiles.h"
 #include "core/config/VoiceSetup.h"
 #include "core/physics/body/BodyParameters.h"
+#include "core/physics/thermal/RosinMaterial.h"
 
 namespace rosin::config
 {
@@ -52,6 +55,36 @@ TEST(VoiceSetup, ContactOverridesAndSwitchesApply)
     EXPECT_FALSE(s.voice.bendingStiffness);
     EXPECT_EQ(s.friction, physics::FrictionModel::ModifiedRod);
     EXPECT_TRUE(s.voice.body.rigid());
+}
+
+// "rosin": the calibrated rosin changes rho c of the layer and of every rosin-coated side, nothing else; the
+// cantilever preset ([Smith2000]'s rig) carries it, the instrument's presets keep the handbook rosin.
+TEST(VoiceSetup, RosinMaterialReplacesEveryRosinSurface)
+{
+    Preset p = defaultPreset();
+    EXPECT_EQ(p.rosin, "handbook");
+    const VoiceSetup handbook = buildVoiceSetup(p);
+    p.rosin = "calibrated";
+    const VoiceSetup calibrated = buildVoiceSetup(p);
+    const double factor = physics::kCalibratedRosinHeatCapacityFactor;
+    EXPECT_DOUBLE_EQ(calibrated.contact.materials.layer.volumetricHeatCapacity,
+                     factor * handbook.contact.materials.layer.volumetricHeatCapacity);
+    EXPECT_DOUBLE_EQ(calibrated.contact.materials.stationary.volumetricHeatCapacity, // the string's coat
+                     factor * handbook.contact.materials.stationary.volumetricHeatCapacity);
+    EXPECT_EQ(calibrated.contact.materials.moving.volumetricHeatCapacity, // Galluzzo's acrylic rod
+              handbook.contact.materials.moving.volumetricHeatCapacity);
+    EXPECT_EQ(calibrated.contact.materials.layer.conductivity, handbook.contact.materials.layer.conductivity);
+
+    const VoiceSetup rig = buildVoiceSetup(loadPreset("cantilever"));
+    EXPECT_DOUBLE_EQ(rig.contact.materials.moving.volumetricHeatCapacity, // the rod's rosin coat
+                     factor * physics::materials::rosin.volumetricHeatCapacity);
+    EXPECT_EQ(rig.contact.materials.stationary.volumetricHeatCapacity, // the perspex wedge
+              physics::materials::acrylic.volumetricHeatCapacity);
+    EXPECT_EQ(loadPreset("cello-solo").rosin, "handbook");
+
+    test::TempDir dir;
+    test::expectPresetRefused(dir.write("bad.json", R"({"format": "rosin-preset/1", "rosin": "wax"})"),
+                              "rosin", "handbook", "an unknown rosin");
 }
 
 TEST(VoiceSetup, EveryShippedPresetBuildsAFrictionLaw)

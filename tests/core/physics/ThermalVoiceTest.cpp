@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "core/physics/laws/FrictionLawFactory.h"
+#include "core/physics/thermal/RosinMaterial.h"
 #include "support/Runs.h"
 
 using namespace rosin;
@@ -65,6 +66,11 @@ TEST(ThermalVoice, PlasticFirstSlipAtCalibratedStaticCoefficient)
     std::printf(
         "[figure] plastic first slip mu_s: %.4f (expected %.4f); with 0.433 mm calibration %.4f (1.2)\n",
         base.muStatic, expected, matched.muStatic);
+    // The calibrated rosin (RosinMaterial.h) predicts the same: the first slip happens at ambient
+    // temperature, where its larger heat capacity has not yet acted.
+    contact = galluzzoContact();
+    contact.materials = withRosin(contact.materials, rosinMaterial(RosinMaterial::Calibrated));
+    EXPECT_NEAR(guettlerFirstSlip(FrictionModel::Plastic, contact, 1.0).muStatic, expected, 0.02 * expected);
 }
 
 TEST(ThermalVoice, PlasticNeverJumpsAtFirstSlip)

@@ -5,6 +5,8 @@
 // each solid gets the middle of the range the literature gives for its material, with the source beside it.
 // What follows from them ([Woodhouse-thermal]'s crossing temperatures, [Smith2000]'s stick-slip frequency and
 // contact temperatures) is a prediction, reported in Resources/docs/physics.md, "The source texts, checked".
+// Rosin's heat capacity is the one constant [Smith2000] calls uncertain: RosinMaterial.h offers a calibrated
+// one.
 #include <cmath>
 
 namespace rosin::physics

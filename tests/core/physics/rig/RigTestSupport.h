@@ -1,6 +1,7 @@
 #pragma once
 // What the rig tests share: [Smith2000]'s run (6.3 N, 0.042 m/s, from rest) with any law, and per-cycle
 // views.
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,6 +46,31 @@ inline double loopSignedArea(const physics::RigRun& run, double fromSeconds)
         twice += a.slidingSpeed * b.frictionCoefficient() - b.slidingSpeed * a.frictionCoefficient();
     }
     return 0.5 * twice;
+}
+
+/// Lowest and highest contact temperature (K above ambient) from `fromSeconds` on.
+struct TemperatureRange
+{
+    double low = 1e300, high = -1e300;
+};
+inline TemperatureRange temperatureRange(const physics::RigRun& run, double fromSeconds)
+{
+    TemperatureRange r;
+    for (std::size_t k = sampleAt(run, fromSeconds); k < run.samples.size(); ++k)
+    {
+        r.low = std::min(r.low, run.samples[k].contactTemperature);
+        r.high = std::max(r.high, run.samples[k].contactTemperature);
+    }
+    return r;
+}
+
+/// The largest v - v_rod of the run: > 0 is forward slipping, the oscillator overtaking the rod.
+inline double largestForwardSlip(const physics::RigRun& run)
+{
+    double dv = 0.0;
+    for (const physics::RigSample& s : run.samples)
+        dv = std::max(dv, s.slidingSpeed);
+    return dv;
 }
 
 } // namespace rosin::test::rig

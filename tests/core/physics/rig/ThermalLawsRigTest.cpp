@@ -1,4 +1,5 @@
-// [Smith2000]'s thermal laws on the same rig, same modal mass and same contact: predictions, not fits.
+// [Smith2000]'s thermal laws on the same rig, same modal mass and same contact, with the handbook rosin:
+// predictions, not fits (CalibratedRosinRigTest.cpp: the same rig with the calibrated rosin).
 //  * plastic (eq. 4): "stick-slip motion at about 44 Hz", "contact temperature fluctuates in the range
 //    20-40 K above ambient", hysteresis "in the correct sense" (anticlockwise, Fig. 2c);
 //  * viscous (eq. 3): "forward slipping" (the oscillator faster than the rod), with [Smith2000]'s thermal
@@ -18,27 +19,6 @@ using namespace rosin::test::rig;
 
 namespace ROSIN_FILE_LOCAL
 {
-struct Range
-{
-    double low = 1e300, high = -1e300;
-};
-Range temperatureRange(const RigRun& run, double fromSeconds)
-{
-    Range r;
-    for (std::size_t k = sampleAt(run, fromSeconds); k < run.samples.size(); ++k)
-    {
-        r.low = std::min(r.low, run.samples[k].contactTemperature);
-        r.high = std::max(r.high, run.samples[k].contactTemperature);
-    }
-    return r;
-}
-double largestForwardSlip(const RigRun& run)
-{
-    double dv = 0.0;
-    for (const RigSample& s : run.samples)
-        dv = std::max(dv, s.slidingSpeed);
-    return dv;
-}
 
 // Seed: "stick-slip motion at about 44 Hz". Measured with the two-sided heat balance (handbook constants,
 // ThermalMaterial.h; perspex wedge, rosin coat on the rod): the first cycle from rest lasts 24.6 ms (40.7 Hz,
@@ -63,7 +43,7 @@ TEST(PlasticRig, StickSlipFrequencyKnownDiscrepancy)
 TEST(PlasticRig, TemperatureRangeKnownDiscrepancy)
 {
     const RigRun run = seedRun(FrictionModel::Plastic);
-    const Range T = temperatureRange(run, kSettledFrom);
+    const TemperatureRange T = temperatureRange(run, kSettledFrom);
     RecordProperty("minKelvin", std::to_string(T.low));
     RecordProperty("maxKelvin", std::to_string(T.high));
     EXPECT_GT(T.low, 28.0);
