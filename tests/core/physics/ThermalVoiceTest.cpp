@@ -73,6 +73,18 @@ TEST(ThermalVoice, PlasticFirstSlipAtCalibratedStaticCoefficient)
     EXPECT_NEAR(guettlerFirstSlip(FrictionModel::Plastic, contact, 1.0).muStatic, expected, 0.02 * expected);
 }
 
+// The same two statements of [Woodhouse-thermal] predicted with the calibrated rosin (RosinMaterial.h): the
+// plastic law never jumps, the modified law jumps at high force only.
+TEST(ThermalVoice, FirstSlipJumpsWithTheCalibratedRosin)
+{
+    auto contact = galluzzoContact();
+    contact.materials = withRosin(contact.materials, rosinMaterial(RosinMaterial::Calibrated));
+    for (double force : {0.3, 3.0})
+        EXPECT_LT(guettlerFirstSlip(FrictionModel::Plastic, contact, force).jump, 0.005) << force;
+    EXPECT_LT(guettlerFirstSlip(FrictionModel::ModifiedBow, contact, 0.3).jump, 0.005);
+    EXPECT_GT(guettlerFirstSlip(FrictionModel::ModifiedBow, contact, 3.0).jump, 0.1);
+}
+
 TEST(ThermalVoice, PlasticNeverJumpsAtFirstSlip)
 {
     for (double force : {0.3, 1.0, 3.0})

@@ -72,6 +72,24 @@ TEST(RosinCalibration, PredictsTheSeedsTemperatureRange)
     EXPECT_NEAR(T.high, 40.0, 5.0);
 }
 
+// Predictions: the plastic law's loop "in the correct sense" (anticlockwise, Fig. 2c), and the measured
+// loop's friction coefficient of ~0.85 at the end of sticking. Measured with the calibrated rosin over 1-2 s:
+// the loop anticlockwise, its peak 0.99 (the handbook rosin: 0.885). The sense is asserted; the peak, 16 %
+// high, is a known discrepancy, its band asserted.
+TEST(RosinCalibration, PlasticLoopRunsAnticlockwiseWithTheSeedsPeakTooHigh)
+{
+    const RigRun run = seedRun(FrictionModel::Plastic,
+                               cantileverWith(rosinMaterial(RosinMaterial::Calibrated)), kRunSeconds);
+    double peak = 0.0;
+    for (std::size_t k = sampleAt(run, kJudgedFrom); k < run.samples.size(); ++k)
+        peak = std::max(peak, run.samples[k].frictionCoefficient());
+    std::printf("[ ROSIN    ] calibrated plastic loop: signed area %.3f m/s, peak mu %.3f\n",
+                loopSignedArea(run, kJudgedFrom), peak);
+    EXPECT_GT(loopSignedArea(run, kJudgedFrom), 0.0);
+    EXPECT_GT(peak, 0.93);
+    EXPECT_LT(peak, 1.03);
+}
+
 // Prediction: [Smith2000]'s viscous law re-run "using a higher value for specific heat capacity": "something
 // more like stick-slip", "approximately 19 Hz", forward slipping still, the contact "between 40 and 60 K
 // above ambient". With the calibrated rosin, measured over 1-2 s: the oscillator overtakes the rod (by up
