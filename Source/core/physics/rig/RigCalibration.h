@@ -1,14 +1,12 @@
 #pragma once
-// Offline runs of the oscillator rig and the two calibrations [Smith2000] leaves to the reader (allocates;
+// Offline runs of the oscillator rig and the calibrations [Smith2000] leaves to the reader (allocates;
 // never on the audio thread):
-//  * the modal mass m, not given in [Smith2000], chosen so that the traditional curve ([Smith2000] eq. 2,
-//  Rosin's
-//    "classical" law) gives stick-slip at the reported 34 Hz;
-//  * the cantilever contact (CantileverContact.h), whose radius makes steady sliding at the rod speed run at
-//    [Smith2000]'s ~55 K above ambient;
-//  * and one constant [Smith2000] calls uncertain: rosin's heat capacity (RosinMaterial.h), chosen so that
-//  the
-//    plastic law gives the reported ~44 Hz.
+// - the modal mass m, not given in [Smith2000], chosen so that the traditional curve ([Smith2000] eq. 2,
+//   Rosin's "classical" law) gives stick-slip at the reported 34 Hz;
+// - the cantilever contact (CantileverContact.h), whose radius makes steady sliding at the rod speed run at
+//   [Smith2000]'s ~55 K above ambient;
+// - and one constant [Smith2000] calls uncertain: rosin's heat capacity (RosinMaterial.h), chosen so that the
+//   plastic law gives the reported ~44 Hz.
 #include <functional>
 #include <memory>
 #include <vector>

@@ -60,7 +60,7 @@ TEST(RosinCalibration, CalibratedRosinSettlesAtTheSeedsFrequency)
     EXPECT_NEAR(f, 44.0, 1.0);
 }
 
-// Prediction: "the contact temperature fluctuates in the range 20-40 K above ambient". Measured 18.0-37.3 K
+// Prediction: "the contact temperature fluctuates in the range 20-40 K above ambient". Measured 17.5-36.1 K
 // (handbook rosin: 35.6-67.4 K); asserted within 5 K of the seed's ends.
 TEST(RosinCalibration, PredictsTheSeedsTemperatureRange)
 {
@@ -93,9 +93,9 @@ TEST(RosinCalibration, PlasticLoopRunsAnticlockwiseWithTheSeedsPeakTooHigh)
 // Prediction: [Smith2000]'s viscous law re-run "using a higher value for specific heat capacity": "something
 // more like stick-slip", "approximately 19 Hz", forward slipping still, the contact "between 40 and 60 K
 // above ambient". With the calibrated rosin, measured over 1-2 s: the oscillator overtakes the rod (by up
-// to 2.4 m/s) 25 times a second, the contact at 16.3-41.1 K. Forward slipping is reproduced and asserted; the
-// rate
-// (+32 %) and the temperatures (about 20 K low) are known discrepancies, their measured bands asserted.
+// to 2.4 m/s) 25 times a second, the contact at 16.3-41.1 K. Forward slipping is reproduced and asserted;
+// the rate (+32 %) and the temperatures (about 20 K low) are known discrepancies, their measured bands
+// asserted.
 TEST(RosinCalibration, ViscousLawStillSlipsForwardQuasiPeriodically)
 {
     const RigRun run = seedRun(FrictionModel::Viscous,

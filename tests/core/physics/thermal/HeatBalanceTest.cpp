@@ -11,16 +11,14 @@
 
 #include "core/physics/thermal/ContactParameters.h"
 #include "core/physics/thermal/HeatBalance.h"
+#include "core/physics/thermal/ThermalTestSupport.h"
 
 using namespace rosin::physics;
+using namespace rosin::test::thermal;
 
 namespace ROSIN_FILE_LOCAL
 {
 constexpr double pi = std::numbers::pi;
-double muSteady(double v)
-{
-    return 0.2 * std::pow(v + 0.011, -0.4);
-} // [Woodhouse-thermal] eq. 11
 
 /// Crossing speed v* of [Woodhouse-thermal] eq. 11 with h = c (v + x0)^-0.4, solved here by bisection on the
 /// two formulas.
@@ -96,42 +94,19 @@ TEST(HeatBalance, CrossingTemperaturesOfTheModifiedLawAsPredictions)
 
 TEST(HeatBalance, HelmholtzMotionTemperaturesAgreeAcrossSampleRates)
 {
-    // [Notes §2.6b] / helm_demo.py: prescribed Helmholtz sliding on the cello D string, F = 1 N,
-    // v_b = 0.1 m/s, beta = 0.1 (slip at v_b/beta = 1 m/s for a fraction beta of each period), mu = 0.45.
     const ContactParameters contact = galluzzoContact();
-    const double F = 1.0, vb = 0.1, beta = 0.1, mu = 0.45, f0 = 146.8;
-    const int periods = 60;
     double means[2], swings[2];
     const double rates[2] = {44100.0, 192000.0};
     for (int r = 0; r < 2; ++r)
     {
-        HeatBalance heat;
-        heat.prepare(contact, rates[r]);
-        const double dt = 1.0 / rates[r];
-        const long n = static_cast<long>(periods * rates[r] / f0);
-        const long lastPeriods = static_cast<long>(10.0 * rates[r] / f0);
-        const long onePeriod = static_cast<long>(rates[r] / f0);
-        double sum = 0.0, lo = 1e300, hi = -1e300;
-        bool finite = true;
-        for (long k = 0; k < n; ++k)
-        {
-            const bool sliding = std::fmod(k * dt * f0, 1.0) < beta;
-            const double v = sliding ? vb / beta : 0.0;
-            heat.commit(mu * F * v, v, F);
-            const double T = heat.temperature();
-            finite = finite && std::isfinite(T);
-            if (k >= n - lastPeriods)
-                sum += T;
-            if (k >= n - onePeriod)
-                lo = std::min(lo, T), hi = std::max(hi, T);
-        }
-        EXPECT_TRUE(finite);
-        means[r] = sum / lastPeriods;
-        swings[r] = hi - lo;
+        const HelmholtzTemperatures T = helmholtzSliding(contact, rates[r]);
+        EXPECT_TRUE(T.finite);
+        means[r] = T.mean;
+        swings[r] = T.swing();
         std::printf(
             "[ Helmholtz] fs = %6.0f Hz: mean %.2f K over the last 10 periods, last period min %.2f max "
             "%.2f swing %.2f K\n",
-            rates[r], means[r], lo, hi, swings[r]);
+            rates[r], means[r], T.low, T.high, swings[r]);
     }
     EXPECT_NEAR(means[0], means[1], 1.0);
     // A prediction against a secondary source: the account of the original model in [Euphonics] 9.6, a mean

@@ -10,9 +10,11 @@
 #include "core/physics/thermal/ModifiedThermalLaw.h"
 #include "core/physics/thermal/PlasticThermalLaw.h"
 #include "core/physics/thermal/ThermalCalibration.h"
+#include "core/physics/thermal/ThermalTestSupport.h"
 #include "core/physics/thermal/ViscousThermalLaw.h"
 
 using namespace rosin::physics;
+using namespace rosin::test::thermal;
 
 namespace ROSIN_FILE_LOCAL
 {
@@ -21,10 +23,6 @@ double muClassical(double v)
 {
     return 0.4 * std::exp(-v / 0.01) + 0.45 * std::exp(-v / 0.1) + 0.35;
 } // [Galluzzo2017] eq. 1
-double muSteady(double v)
-{
-    return 0.2 * std::pow(v + 0.011, -0.4);
-} // [Woodhouse-thermal] eq. 11
 double hBow(double v)
 {
     return 0.5 * std::pow(v + 0.27, -0.4);
