@@ -123,7 +123,7 @@ NOTE_SECONDS = 0.8
 RECORDING = "--recording"  # in place of the rosin binary: the FluidR3 cello
 
 
-def judge_note(rosin, pitch, velocity, controllers=(), preset=None, extra=()):
+def judge_note(rosin, pitch, velocity, controllers=(), preset=None, extra=(), settle=0.15):
     """One detached note rendered on its own (a string left ringing by an earlier note would make the next
     one aperiodic), after `controllers` ((number, value), ...) at t = 0."""
     events = [e for number, value in controllers for e in cc(0.0, number, value)]
@@ -132,15 +132,15 @@ def judge_note(rosin, pitch, velocity, controllers=(), preset=None, extra=()):
         x, rate = render_recording(events)
     else:
         x, rate = render(rosin, events, preset, extra, tail=0.1)
-    return judge(x, rate, pitch, 0.2, 0.2 + NOTE_SECONDS)
+    return judge(x, rate, pitch, 0.2, 0.2 + NOTE_SECONDS, settle)
 
 
-def judge_grid(rosin, controllers=(), preset=None, extra=(), jobs=2, pitches=GRID_PITCHES):
+def judge_grid(rosin, controllers=(), preset=None, extra=(), jobs=2, pitches=GRID_PITCHES, settle=0.15):
     """The 44 detached notes with these controllers: list of (pitch, velocity, verdict)."""
     from concurrent.futures import ThreadPoolExecutor
     cases = [(p, v) for v in GRID_VELOCITIES for p in pitches]
     with ThreadPoolExecutor(jobs) as pool:
-        verdicts = pool.map(lambda c: judge_note(rosin, c[0], c[1], controllers, preset, extra), cases)
+        verdicts = pool.map(lambda c: judge_note(rosin, c[0], c[1], controllers, preset, extra, settle), cases)
         return [(p, v, j) for (p, v), j in zip(cases, verdicts)]
 
 
