@@ -44,7 +44,9 @@ TEST(LiveReadout, HeldNoteReadsAsHelmholtzThenSilent)
     ASSERT_GE(s, 0);
     const auto r = p.telemetry().strings[static_cast<std::size_t>(s)].read();
     EXPECT_TRUE(r.bowing);
-    EXPECT_EQ(r.regime, analysis::Regime::Helmholtz) << plugin::regimeDisplayName(r.regime, r.bowing);
+    EXPECT_EQ(r.regime, analysis::Regime::Helmholtz)
+        << plugin::regimeDisplayName(r.regime, r.bowing) << " fpp " << r.flybacksPerPeriod << " slips "
+        << r.slipsPerPeriod << " cv " << r.irregularity << " stick " << r.stickFraction;
     EXPECT_NEAR(r.flybacksPerPeriod, 1.0, 0.2);
 
     midi.addEvent(juce::MidiMessage::noteOff(1, 50), 0);
