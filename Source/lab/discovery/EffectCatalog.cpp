@@ -76,6 +76,27 @@ void ambientTemperature(SimulationModel& m, const std::vector<double>& v)
     m.preset.ambientOffset += v[0];
 }
 
+// Each effect's null: the values at which its change leaves the model as it was.
+bool junctionGrowthNull(const std::vector<double>& v)
+{
+    return v[0] == 0.0;
+}
+
+bool breakawayNull(const std::vector<double>& v)
+{
+    return v[0] == 2.0 && v[1] == 0.0; // no curve and no margin
+}
+
+bool extraStringDampingNull(const std::vector<double>& v)
+{
+    return v[0] == 1.0;
+}
+
+bool ambientTemperatureNull(const std::vector<double>& v)
+{
+    return v[0] == 0.0;
+}
+
 // A choice among `choices`: its range is the indices (0 .. choices - 1), so it cannot fall out of step with
 // the list; rosin synth-data draws among the first drawMax + 1.
 EffectParameter choiceParameter(std::string name, std::vector<std::string> choices, double drawMax,
@@ -163,12 +184,16 @@ std::vector<Effect> makeCatalog()
          {growth, onsetTime, ageing},
          junctionGrowth,
          {gainAtReferenceHold, onsetTime, ageing},
-         junctionGrowthFromSearch},
+         junctionGrowthFromSearch,
+         junctionGrowthNull},
         {"breakaway-jump",
          "abrupt release at the first slip while the rosin is cold (modified thermal law)",
          "[Woodhouse-thermal] eqs. 6, 12, 13",
          {jumpCurve, firstSlipMargin},
-         breakawayJump},
+         breakawayJump,
+         {},
+         nullptr,
+         breakawayNull},
         {"hertz-contact",
          "contact area proportional to N^(2/3) instead of N",
          "[Notes §8.3]; [Galluzzo2017] Fig. 11",
@@ -183,12 +208,18 @@ std::vector<Effect> makeCatalog()
          "string losses higher than the nominal loss law",
          "[Galluzzo2017] Table 1 (stopped-string bracket), Fig. 12c",
          {lossScale, lossTerms},
-         extraStringDamping},
+         extraStringDamping,
+         {},
+         nullptr,
+         extraStringDampingNull},
         {"ambient-temperature",
          "the rosin starts warmer or colder than the rig's stated ambient temperature",
          "the three source texts: thermal laws calibrated at the rig's ambient",
          {ambientOffset},
-         ambientTemperature},
+         ambientTemperature,
+         {},
+         nullptr,
+         ambientTemperatureNull},
     };
 }
 
@@ -237,6 +268,11 @@ std::vector<double> parameterValues(const Effect& effect, const std::vector<doub
 {
     return effect.fromSearch && !effect.searchParameters.empty() ? effect.fromSearch(searchValues)
                                                                  : searchValues;
+}
+
+bool isNull(const Effect& effect, const std::vector<double>& values)
+{
+    return effect.atNull != nullptr && effect.atNull(values);
 }
 
 void applyEffect(const Effect& effect, const std::vector<double>& values, SimulationModel& model)

@@ -62,12 +62,20 @@ struct Effect
     /// at a time, which crosses a valley lying diagonally to them without following it.
     std::vector<EffectParameter> searchParameters{};
     std::vector<double> (*fromSearch)(const std::vector<double>& searchValues) = nullptr;
+    /// True where `values` leave the model as it was, the effect absent (its null: no growth, no margin and
+    /// no curve, no extra loss, no offset); nullptr for an effect without one in its fit range (hertz
+    /// contact is a switch; the weakest creep still moves a bowed transient). A fit that ends at its null
+    /// explains nothing of its own: discover says so.
+    bool (*atNull)(const std::vector<double>& values) = nullptr;
 };
 
 /// The coordinates a fit of `effect` searches: searchParameters, or parameters where there are none.
 const std::vector<EffectParameter>& fitCoordinates(const Effect& effect);
 /// The effect's parameter values at a point of its fit coordinates.
 std::vector<double> parameterValues(const Effect& effect, const std::vector<double>& searchValues);
+
+/// Whether `values` of `effect` are its null (Effect::atNull; false for an effect without one).
+bool isNull(const Effect& effect, const std::vector<double>& values);
 
 /// The six effects, in the order they were specified (reports and tests list them so).
 const std::vector<Effect>& effectCatalog();

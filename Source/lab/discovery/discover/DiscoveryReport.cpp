@@ -31,6 +31,12 @@ nlohmann::json parameters(const EffectScore& s)
     return p;
 }
 
+/// What a candidate whose fit stayed at its null scored is the nuisance refit's gain, not its own.
+std::string nullNote(const EffectScore& s)
+{
+    return s.leftNull ? "" : ", its fit never left the null: no evidence for or against it";
+}
+
 nlohmann::json tried(const std::vector<EffectScore>& scores)
 {
     nlohmann::json a = nlohmann::json::array();
@@ -41,6 +47,7 @@ nlohmann::json tried(const std::vector<EffectScore>& scores)
                      {"pValue", s.pValue},
                      {"crossFitted", s.crossFitted},
                      {"significant", s.significant},
+                     {"leftNull", s.leftNull},
                      {"evaluations", s.evaluations}});
     return a;
 }
@@ -274,7 +281,7 @@ std::string discoveryMarkdown(const Discovery& d, const Dataset& dataset,
         m += "Candidates (held-out gain, p):";
         for (const auto& t : s.tried)
             m += " " + t.effect->name + " " + number(100.0 * t.heldOutGain, "%.0f") + " % (" +
-                 number(t.pValue, "%.2g") + (t.crossFitted ? ", cross-fitted" : "") + ");";
+                 number(t.pValue, "%.2g") + (t.crossFitted ? ", cross-fitted" : "") + nullNote(t) + ");";
         m += "\n\n";
     }
     if (!d.search.lastTried.empty())
@@ -284,7 +291,8 @@ std::string discoveryMarkdown(const Discovery& d, const Dataset& dataset,
              " on the held-out half or, cross-fitted, over both halves; gain >= 20 %):";
         for (const auto& t : d.search.lastTried)
             m += " " + t.effect->name + " " + number(100.0 * t.heldOutGain, "%.0f") +
-                 " % (p = " + number(t.pValue, "%.2g") + (t.crossFitted ? ", cross-fitted" : "") + ");";
+                 " % (p = " + number(t.pValue, "%.2g") + (t.crossFitted ? ", cross-fitted" : "") +
+                 nullNote(t) + ");";
         m += "\n\n";
     }
     m += "## Figures\n\n";

@@ -204,8 +204,9 @@ EffectScore score(const SearchInputs& in, const CurrentModel& current, const std
     const Evidence one = evidenceOf({&a}, seed);
     s.heldOutGain = one.gain;
     s.pValue = one.pValue;
-    s.significant = one.pValue < kHalfDecides * alpha && one.gain >= kMinRelativeGain;
-    if (s.significant || !(one.pValue < kCrossFitScreenP && one.gain >= kCrossFitScreenGain))
+    s.leftNull = !isNull(effect, s.values);
+    s.significant = s.leftNull && one.pValue < kHalfDecides * alpha && one.gain >= kMinRelativeGain;
+    if (!s.leftNull || s.significant || !(one.pValue < kCrossFitScreenP && one.gain >= kCrossFitScreenGain))
         return s;
     // Cross-fitted: the effect fitted on the held-out half and scored on the training half, and the
     // test over every trial (Cross-fit in EffectSearch.h).
@@ -288,9 +289,10 @@ SearchResult searchEffects(const SearchInputs& in, const SimulationModel& baseli
             {
                 const auto& s = tried.back();
                 char line[200];
-                std::snprintf(
-                    line, sizeof(line), "  step %zu: %-21s held-out gain %+6.1f %%, p = %.2g (%d fits)\n",
-                    result.steps.size() + 1, e->name.c_str(), 100.0 * s.heldOutGain, s.pValue, s.evaluations);
+                std::snprintf(line, sizeof(line),
+                              "  step %zu: %-21s held-out gain %+6.1f %%, p = %.2g (%d fits)%s\n",
+                              result.steps.size() + 1, e->name.c_str(), 100.0 * s.heldOutGain, s.pValue,
+                              s.evaluations, s.leftNull ? "" : "; its fit never left the null");
                 *in.log << line << std::flush;
             }
         }

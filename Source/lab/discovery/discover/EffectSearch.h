@@ -25,6 +25,9 @@
 //          e_i a trial's share of the objective (objectiveShares), so the gain is the held-out objective's
 //          relative fall. Significant when the paired sign-flip test gives p < alpha / 2, alpha = 0.01 /
 //          (effects tried) (Bonferroni over the candidates), AND the gain is at least 20 %.
+//   Null:  a candidate whose fit ends at its null (no growth, no margin, no extra loss, ...) explains
+//          nothing of its own: whatever its held-out gain (the nuisance refit's), it is not significant, and
+//          the log, the report and the JSON (leftNull) say that its fit never left the null.
 //   Cross-fit: a candidate that comes close on the held-out half (p < 0.05 and a gain of at least 10 %,
 //          yet not significant) is also fitted on the held-out half and scored on the training half, and
 //          the test and the gain are taken over every trial of both: significant when p < alpha / 2 and the
@@ -81,6 +84,9 @@ struct EffectScore
     double pValue = 1.0;
     bool crossFitted = false;
     bool significant = false;
+    /// False when the fit ended at the effect's null (Effect::atNull): the model it scores is the current
+    /// one with the nuisance refitted, so its gain is the refit's, not the effect's; never significant.
+    bool leftNull = true;
     GapSummary heldOutBefore, heldOutAfter;
     std::vector<double> heldOutShares; ///< each held-out trial's share of the objective with the effect
 };
