@@ -113,8 +113,8 @@ EffectParameter choiceParameter(std::string name, std::vector<std::string> choic
 
 std::vector<Effect> makeCatalog()
 {
-    // Fit ranges (min..max) are wide: a gap may call for more than synth-data hides. Draw ranges are issue
-    // 5's "realistic" values, strong enough to be seen through the measurement chain.
+    // Fit ranges (min..max) are wide: a gap may call for more than synth-data hides. Draw ranges are
+    // physically realistic strengths, strong enough to be seen through the measurement chain.
     const EffectParameter growth{.name = "growth",
                                  .min = 0.0,
                                  .max = 1.0,
