@@ -4,10 +4,11 @@ program, judged from the rendered audio alone (audio_judge.py).
 
 - The grid of 44 detached notes (every minor third C2-G4 at velocities 30, 64, 100, 127) speaks within
   150 ms (200 ms at pp, CC11 20) at a median pitch within 25 cents in at least 42 of 44 notes at each of
-  CC11 20, 64, 110 (CC1 64) and CC1 20, 110 (CC11 64). Judged on the bridge force the render writes with --output force: the string's
-  own audio, whose regime the grid asks about. A note is judged on its harmonics 1-8 (audio_judge.heard), where
-  its steadiness is heard; the radiated sound is stricter (the body's resonances slow the settling of the C
-  string's notes); the manual's playing page gives its figures, 33-44 of 44.
+  CC11 20, 64, 110 (CC1 64) and CC1 20, 110 (CC11 64). Judged on the bridge force the render writes with
+  --output force: the string's own audio, whose regime the grid asks about. A note is judged on its harmonics
+  1-8 (audio_judge.heard), where its steadiness is heard; the radiated sound is stricter (the body's
+  resonances slow the settling of the C string's notes); the manual's playing page gives its figures, 23-41
+  of 44 with the program's slip noise.
 - CC11 20 to 127 on a sustained E3 (stopped on the D string): the radiated level rises step by step by at
   least 25 dB, and the sound brightens: harmonics 6-40 gain on harmonics 1-3 by at least 3 dB from pp to ff
   with mf between, and the spectral centroid ends higher than it starts.

@@ -232,6 +232,8 @@ TEST(EffectCatalog, AnEffectAtItsNullBowsAsTheBaselineDoes)
         EXPECT_TRUE(isNull(effect, null)) << name;
         EXPECT_FALSE(isNull(effect, off)) << name;
         EXPECT_EQ(bowedFromRest(withEffect(name, null)), baseline) << name; // bit for bit
+        EXPECT_NE(bowedFromRest(withEffect(name, off)), baseline)
+            << name; // and a small step off it bows otherwise
     }
     EXPECT_FALSE(isNull(*findEffect("hertz-contact"), {})); // a switch: no null to stay at
     // The weakest dashpot of the fit's range (0.9995 x the rigid contact on this string) still moves the
