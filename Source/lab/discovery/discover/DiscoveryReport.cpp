@@ -48,6 +48,8 @@ nlohmann::json tried(const std::vector<EffectScore>& scores)
                      {"crossFitted", s.crossFitted},
                      {"significant", s.significant},
                      {"leftNull", s.leftNull},
+                     {"signatureZ", s.signature.z},
+                     {"signatureBeyondTrends", s.signature.beyondTrends},
                      {"evaluations", s.evaluations}});
     return a;
 }
@@ -83,6 +85,15 @@ std::string number(double v, const char* format = "%.3g")
     char text[64];
     std::snprintf(text, sizeof(text), format, v);
     return text;
+}
+
+/// The signature test's figures (SignatureTest.h), or nothing for a fit at its null.
+std::string signatureNote(const EffectScore& s)
+{
+    if (!s.leftNull)
+        return "";
+    return ", signature z " + number(s.signature.z, "%+.1f") + " with " +
+           number(100.0 * s.signature.beyondTrends, "%.0f") + " % beyond trends";
 }
 } // namespace
 
@@ -281,7 +292,8 @@ std::string discoveryMarkdown(const Discovery& d, const Dataset& dataset,
         m += "Candidates (held-out gain, p):";
         for (const auto& t : s.tried)
             m += " " + t.effect->name + " " + number(100.0 * t.heldOutGain, "%.0f") + " % (" +
-                 number(t.pValue, "%.2g") + (t.crossFitted ? ", cross-fitted" : "") + nullNote(t) + ");";
+                 number(t.pValue, "%.2g") + (t.crossFitted ? ", cross-fitted" : "") + signatureNote(t) +
+                 nullNote(t) + ");";
         m += "\n\n";
     }
     if (!d.search.lastTried.empty())
@@ -292,7 +304,7 @@ std::string discoveryMarkdown(const Discovery& d, const Dataset& dataset,
         for (const auto& t : d.search.lastTried)
             m += " " + t.effect->name + " " + number(100.0 * t.heldOutGain, "%.0f") +
                  " % (p = " + number(t.pValue, "%.2g") + (t.crossFitted ? ", cross-fitted" : "") +
-                 nullNote(t) + ");";
+                 signatureNote(t) + nullNote(t) + ");";
         m += "\n\n";
     }
     m += "## Figures\n\n";

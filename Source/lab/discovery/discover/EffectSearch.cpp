@@ -133,6 +133,7 @@ struct FoldScore
     int evaluations = 0;
     std::vector<double> before, after; ///< each scored trial's share of the objective
     GapSummary gapBefore, gapAfter;
+    SignatureScore signature;
 };
 
 FoldScore fitAndScore(const SearchInputs& in, const CurrentModel& current,
@@ -163,6 +164,10 @@ FoldScore fitAndScore(const SearchInputs& in, const CurrentModel& current,
     f.gapAfter = fitGap(in.heldOut, in.measured, sim, in.scatter, current.heldOut);
     f.before = objectiveShares(in.heldOut, in.measured, current.heldOut, in.scatter);
     f.after = objectiveShares(in.heldOut, in.measured, sim, in.scatter, current.heldOut);
+    // Along the fitted model's change to the current one (the effect with the nuisance refitted with it). A
+    // fit at its null changes only the nuisance: nothing of the effect's to test.
+    if (!isNull(effect, f.values))
+        f.signature = signatureScore(in.heldOut, *in.grid, in.measured, current.heldOut, sim, in.scatter);
     return f;
 }
 
@@ -200,6 +205,7 @@ EffectScore score(const SearchInputs& in, const CurrentModel& current, const std
     s.heldOutBefore = a.gapBefore;
     s.heldOutAfter = a.gapAfter;
     s.heldOutShares = a.after;
+    s.signature = a.signature;
     const std::uint64_t seed = in.seed + effectIndex(effect);
     const Evidence one = evidenceOf({&a}, seed);
     s.heldOutGain = one.gain;
@@ -288,11 +294,14 @@ SearchResult searchEffects(const SearchInputs& in, const SimulationModel& baseli
             if (in.log)
             {
                 const auto& s = tried.back();
-                char line[200];
-                std::snprintf(line, sizeof(line),
-                              "  step %zu: %-21s held-out gain %+6.1f %%, p = %.2g (%d fits)%s\n",
-                              result.steps.size() + 1, e->name.c_str(), 100.0 * s.heldOutGain, s.pValue,
-                              s.evaluations, s.leftNull ? "" : "; its fit never left the null");
+                char line[240];
+                std::snprintf(
+                    line, sizeof(line),
+                    "  step %zu: %-21s held-out gain %+6.1f %%, p = %.2g (%d fits); signature z %+.1f, "
+                    "%.0f %% beyond trends%s\n",
+                    result.steps.size() + 1, e->name.c_str(), 100.0 * s.heldOutGain, s.pValue, s.evaluations,
+                    s.signature.z, 100.0 * s.signature.beyondTrends,
+                    s.leftNull ? "" : "; its fit never left the null");
                 *in.log << line << std::flush;
             }
         }

@@ -58,6 +58,7 @@
 #include "lab/discovery/discover/GapMeasure.h"
 #include "lab/discovery/discover/PairedTest.h"
 #include "lab/discovery/discover/SearchInputs.h"
+#include "lab/discovery/discover/SignatureTest.h"
 
 namespace rosin::discovery
 {
@@ -89,6 +90,10 @@ struct EffectScore
     bool leftNull = true;
     GapSummary heldOutBefore, heldOutAfter;
     std::vector<double> heldOutShares; ///< each held-out trial's share of the objective with the effect
+    /// The held-out residual along the fitted model's change to the current model's features (the effect
+    /// and the nuisance refitted with it), smooth bias projected out (SignatureTest.h); 0 for a fit at its
+    /// null. Reported, not yet part of the verdict.
+    SignatureScore signature;
 };
 
 /// The runner-up of a step: the best other candidate that was significant too, and the paired sign-flip
