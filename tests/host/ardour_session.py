@@ -148,10 +148,18 @@ class Ardour:
         """The master bus over the session range, 32-bit float, at the session's rate: (rate, samples x
         channels)."""
         args = [self.tools["export"], "-b", "float", "-o", wav, session.folder, session.name]
+        # Every attempt exports the session as it was made: an export that hung or crashed can leave its
+        # crash-recovery state (<name>.pending) behind, with the plugin's state as it was when it stopped (a
+        # VST3's controller-mapped parameters at their last values), which the next attempt would load.
+        pristine = session.folder + ".pristine"
+        shutil.rmtree(pristine, ignore_errors=True)
+        shutil.copytree(session.folder, pristine, symlinks=True)
 
         def attempt():
             if os.path.exists(wav):
                 os.remove(wav)
+            shutil.rmtree(session.folder)
+            shutil.copytree(pristine, session.folder, symlinks=True)
             self._run(args, "ardour7-export", timeout=EXPORT_TIMEOUT)
             if not os.path.exists(wav):
                 raise RuntimeError("ardour7-export wrote no " + wav)
