@@ -294,14 +294,15 @@ SearchResult searchEffects(const SearchInputs& in, const SimulationModel& baseli
             if (in.log)
             {
                 const auto& s = tried.back();
+                char signature[64] = "";
+                if (s.leftNull)
+                    std::snprintf(signature, sizeof(signature), "; signature z %+.1f, %.0f %% beyond trends",
+                                  s.signature.z, 100.0 * s.signature.beyondTrends);
                 char line[240];
-                std::snprintf(
-                    line, sizeof(line),
-                    "  step %zu: %-21s held-out gain %+6.1f %%, p = %.2g (%d fits); signature z %+.1f, "
-                    "%.0f %% beyond trends%s\n",
-                    result.steps.size() + 1, e->name.c_str(), 100.0 * s.heldOutGain, s.pValue, s.evaluations,
-                    s.signature.z, 100.0 * s.signature.beyondTrends,
-                    s.leftNull ? "" : "; its fit never left the null");
+                std::snprintf(line, sizeof(line),
+                              "  step %zu: %-21s held-out gain %+6.1f %%, p = %.2g (%d fits)%s%s\n",
+                              result.steps.size() + 1, e->name.c_str(), 100.0 * s.heldOutGain, s.pValue,
+                              s.evaluations, signature, s.leftNull ? "" : "; its fit never left the null");
                 *in.log << line << std::flush;
             }
         }
