@@ -71,6 +71,17 @@ def controller_phrase(path):
     smf.write(path, 960, smf.for_host(events, 960))
 
 
+def difference(a, b, rate):
+    """The largest difference of two renders over their common length, and where they first part."""
+    n = min(len(a), len(b))
+    d = np.max(np.abs(a[:n] - b[:n]), axis=1)
+    error = float(np.max(d)) if n else 0.0
+    if error <= TOLERANCE:
+        return error, ""
+    first = int(np.argmax(d > TOLERANCE))
+    return error, f" (first at {first / rate:.4f} s, the largest at {int(np.argmax(d)) / rate:.4f} s)"
+
+
 def report_faults_and_clean_up(case):
     """A test class's tearDownClass: how often Ardour failed by itself, then its temporary folder gone."""
     print("Ardour's own failures, each tried again: " + (", ".join(f"{n} {kind}" for kind, n in
@@ -108,11 +119,12 @@ class ArdourRendersLikeRosin(unittest.TestCase):
         return ardour_session.read_float_wav(out)
 
     def through_ardour(self, midi, rate, plugin_format, program=""):
+        """A saved session playing `midi` through the plugin, and the file its export is to be written to."""
         stem = os.path.splitext(os.path.basename(midi))[0]
         folder = os.path.join(self.temp.name, f"{stem}-{plugin_format}-{rate}{'-' + program if program else ''}")
         session = self.host.make_session(folder, rate, plugin_format, program)
         session.add_midi(midi, self.seconds(midi))
-        return self.host.export(session, folder + ".wav")
+        return session, folder + ".wav"
 
     def assert_same(self, midi, program=""):
         for rate in RATES:
@@ -122,15 +134,32 @@ class ArdourRendersLikeRosin(unittest.TestCase):
             self.assertGreater(peak, 1e-3, "rosin render is silent: nothing to compare")
             for plugin_format in FORMATS:
                 with self.subTest(format=plugin_format, rate=rate):
-                    host_rate, host = self.through_ardour(midi, rate, plugin_format, program)
+                    session, wav = self.through_ardour(midi, rate, plugin_format, program)
+                    host_rate, host = self.host.export(session, wav)
                     self.assertEqual(host_rate, rate)
                     self.assertEqual(host.shape[1], 2, "the master bus is stereo")
                     self.assertLessEqual(abs(len(host) - len(reference)), 1, "lengths differ")
-                    n = min(len(host), len(reference))
-                    error = np.max(np.abs(host[:n] - reference[:n]))
-                    print(f"{os.path.basename(midi)} {program or 'default program'} {plugin_format} {rate} Hz: "
-                          f"{n} samples, peak {peak:.4f}, largest difference {error:.3g}", flush=True)
+                    what = f"{os.path.basename(midi)} {program or 'default program'} {plugin_format} {rate} Hz"
+                    error, where = difference(host, reference, rate)
+                    print(f"{what}: {min(len(host), len(reference))} samples, peak {peak:.4f}, largest "
+                          f"difference {error:.3g}{where}", flush=True)
+                    if error > TOLERANCE:
+                        error = self.export_again(session, wav, reference, host, what)
                     self.assertLessEqual(error, TOLERANCE)
+
+    def export_again(self, session, wav, reference, first, what):
+        """An export that differs from `rosin render` is made once more from the same saved session. Only
+        when the second equals the render does the test pass, the first counted as Ardour's (an export
+        differing from one of the same session, plugin and file; see Resources/docs/tests.md)."""
+        rate, again = self.host.export(session, wav)
+        error, where = difference(again, reference, rate)
+        between, at = difference(again, first, rate)
+        print(f"{what}, exported again: largest difference {error:.3g}{where}; from the first export "
+              f"{between:.3g}{at}", flush=True)
+        if error <= TOLERANCE:
+            key = "export differing from another export of its session"
+            self.host.faults[key] = self.host.faults.get(key, 0) + 1
+        return error
 
     def test_the_demo_melody(self):
         self.assert_same(self.files["melody"])
@@ -146,7 +175,7 @@ class ArdourRendersLikeRosin(unittest.TestCase):
         original = os.path.join(self.demo, "melody.mid")
         rate = RATES[0]
         _, reference = self.render(original, rate)
-        _, host = self.through_ardour(original, rate, "LV2")
+        _, host = self.host.export(*self.through_ardour(original, rate, "LV2"))
         n = min(len(host), len(reference))
         print(f"melody.mid as written, LV2 {rate} Hz: largest difference "
               f"{np.max(np.abs(host[:n] - reference[:n])):.3g} (peak {np.max(np.abs(reference)):.4f})")
