@@ -47,6 +47,7 @@ nlohmann::json tried(const std::vector<EffectScore>& scores)
                      {"pValue", s.pValue},
                      {"crossFitted", s.crossFitted},
                      {"significant", s.significant},
+                     {"significantBySignature", s.bySignature},
                      {"leftNull", s.leftNull},
                      {"signatureZ", s.signature.z},
                      {"signatureBeyondTrends", s.signature.beyondTrends},

@@ -193,8 +193,8 @@ Evidence evidenceOf(const std::vector<const FoldScore*>& folds, std::uint64_t se
     return {before > 0.0 ? 1.0 - after / before : 0.0, signFlipTest(d, seed).pValue};
 }
 
-EffectScore score(const SearchInputs& in, const CurrentModel& current, const std::vector<std::size_t>& active,
-                  const Effect& effect, double alpha)
+EffectScore scoreByTests(const SearchInputs& in, const CurrentModel& current,
+                         const std::vector<std::size_t>& active, const Effect& effect, double alpha)
 {
     EffectScore s;
     s.effect = &effect;
@@ -234,7 +234,24 @@ EffectScore score(const SearchInputs& in, const CurrentModel& current, const std
     return s;
 }
 
+EffectScore score(const SearchInputs& in, const CurrentModel& current, const std::vector<std::size_t>& active,
+                  const Effect& effect, double alpha)
+{
+    EffectScore s = scoreByTests(in, current, active, effect, alpha);
+    admitBySignature(s);
+    return s;
+}
+
 } // namespace
+
+void admitBySignature(EffectScore& s)
+{
+    if (s.significant || !s.leftNull)
+        return;
+    s.bySignature =
+        s.signature.z >= kSignatureZ && s.heldOutGain >= kSignatureMinGain && s.pValue < kSignatureScreenP;
+    s.significant = s.bySignature;
+}
 
 void splitTrials(const ScanGrid& grid, std::vector<std::size_t>& training, std::vector<std::size_t>& heldOut)
 {
@@ -364,7 +381,19 @@ std::string describeEvidence(const EffectScore& s, double alpha)
                         "training half), over both halves"
                       : "over the held-out half",
         100.0 * s.heldOutGain, s.pValue, (s.crossFitted ? 1.0 - kHalfDecides : kHalfDecides) * alpha);
-    return text + tail;
+    text += tail;
+    if (s.bySignature)
+    {
+        char why[240];
+        std::snprintf(
+            why, sizeof(why),
+            "; significant by its signature: the held-out residual lies along it %.1f standard "
+            "errors beyond an offset and linear trends (threshold %.1f, with a gain of at least %.0f "
+            "%% and p below %.2g)",
+            s.signature.z, kSignatureZ, 100.0 * kSignatureMinGain, kSignatureScreenP);
+        text += why;
+    }
+    return text;
 }
 
 std::optional<StepRival> rivalOf(const std::vector<EffectScore>& tried, const EffectScore& chosen,

@@ -41,6 +41,11 @@
 //          alpha / 2 rejects. The halves' fits depend on each other's trials only through an effect's few
 //          parameters, which the sign-flip test treats as independent (the usual caveat of a
 //          cross-validated test; the negative controls check it).
+//   Signature: a candidate both tests leave short is significant by its signature (SignatureTest.h) when
+//          z >= 4, the gain is at least 10 % and p < 0.2 (admitBySignature): a matched filter with smooth
+//          bias projected out is the evidence the paired test, which sees only how much the objective fell,
+//          lacks. This route is not inside alpha: its false-alarm rate is what the negative controls of the
+//          tuning split measure (none of 8; Resources/docs/discover.md).
 //   Stop:  after three effects, when no candidate is significant, or when the held-out gap of the model with
 //          the adopted effects is 0 (within the measurement's scatter on every feature).
 // JUCE-free.
@@ -70,6 +75,14 @@ inline constexpr double kHalfDecides = 0.5;
 /// A candidate is cross-fitted when its held-out half gives p below this and a gain of at least this.
 inline constexpr double kCrossFitScreenP = 0.05;
 inline constexpr double kCrossFitScreenGain = 0.1;
+/// A candidate the paired test leaves short of alpha is significant by its signature (SignatureTest.h) when
+/// the held-out residual lies along it at least this many standard errors beyond a smooth model-form bias,
+/// its held-out gain is at least kSignatureMinGain and the paired test gives p below kSignatureScreenP. The
+/// gain and the test keep a signature that only follows the residual's structure from naming an effect that
+/// makes the fit worse; all three are set on the tuning split (Resources/docs/discover.md).
+inline constexpr double kSignatureZ = 4.0;
+inline constexpr double kSignatureMinGain = 0.1;
+inline constexpr double kSignatureScreenP = 0.2;
 
 /// The checkerboard split of the valid trials (grid cells) into training and held-out halves.
 void splitTrials(const ScanGrid& grid, std::vector<std::size_t>& training, std::vector<std::size_t>& heldOut);
@@ -92,9 +105,16 @@ struct EffectScore
     std::vector<double> heldOutShares; ///< each held-out trial's share of the objective with the effect
     /// The held-out residual along the fitted model's change to the current model's features (the effect
     /// and the nuisance refitted with it), smooth bias projected out (SignatureTest.h); 0 for a fit at its
-    /// null. Reported, not yet part of the verdict.
+    /// null.
     SignatureScore signature;
+    /// Significant by the signature rule (kSignatureZ), the paired test alone falling short.
+    bool bySignature = false;
 };
+
+/// The signature rule: a candidate that left its null and that the paired test left short becomes
+/// significant (and bySignature) when its signature z, held-out gain and p pass kSignatureZ,
+/// kSignatureMinGain and kSignatureScreenP; a significant candidate or one at its null is left as it is.
+void admitBySignature(EffectScore& s);
 
 /// The runner-up of a step: the best other candidate that was significant too, and the paired sign-flip
 /// test between the two on the held-out trials (the chosen one's shares against the rival's). Two effects
