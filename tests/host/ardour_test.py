@@ -149,8 +149,8 @@ class ArdourRendersLikeRosin(unittest.TestCase):
 
     def export_again(self, session, wav, reference, first, what):
         """An export that differs from `rosin render` is made once more from the same saved session. Only
-        when the second equals the render does the test pass, the first counted as Ardour's (an export
-        differing from one of the same session, plugin and file; see Resources/docs/tests.md)."""
+        when the second equals the render does the test pass, the first counted among the failures the test
+        reports (its cause is not traced; see Resources/docs/tests.md)."""
         rate, again = self.host.export(session, wav)
         error, where = difference(again, reference, rate)
         between, at = difference(again, first, rate)
