@@ -237,6 +237,37 @@ TEST_F(DiscoverCli, TwoHiddenEffectsAreTheTwoExplanations)
     EXPECT_LT(j["gapAfter"].get<double>(), 0.75 * j["gapBefore"].get<double>()); // 0.57 with one adopted
 }
 
+// A law of the source texts in the baseline's place, hidden by the independent generator, which simulates
+// its viscous law its own way (its plastic calibration read as a viscosity): the friction-law candidate
+// names the law first, the gap beyond the model-form tolerance at least halved.
+TEST_F(DiscoverCli, AViscousRosinIsNamedAsTheLawItIs)
+{
+    makeDataset({"friction-law:replacementLaw=viscous"}, "12", "viscous",
+                {"--beta", "0.0899", "--generator", "independent"});
+    const auto j = discover("viscous", {"--max-effects", "1"});
+    EXPECT_EQ(j["status"], "effect-found");
+    ASSERT_FALSE(j["steps"].empty());
+    EXPECT_EQ(j["steps"][0]["effect"], "friction-law");
+    EXPECT_EQ(j["steps"][0]["parameters"]["replacementLaw"], "viscous");
+    EXPECT_LT(j["steps"][0]["pValue"].get<double>(), j["steps"][0]["alpha"].get<double>());
+    EXPECT_GE(j["steps"][0]["heldOutGain"].get<double>(), 0.2);
+    const auto& beyond = j["gapBeyondModelForm"];
+    EXPECT_LE(beyond["after"].get<double>(), 0.5 * beyond["calibrated"].get<double>()) << beyond.dump();
+}
+
+// The other way round: plastic-law data diagnosed against the classical curve as the baseline. The data's
+// own law is the candidate's answer, and a law the model already has is the candidate's null.
+TEST_F(DiscoverCli, PlasticDataAgainstAClassicalBaselineNamesThePlasticLaw)
+{
+    makeDataset({"none"}, "4", "plastic");
+    const auto j = discover("plastic", {"--max-effects", "1", "--baseline", "classical"});
+    EXPECT_EQ(j["status"], "effect-found");
+    ASSERT_FALSE(j["steps"].empty());
+    EXPECT_EQ(j["steps"][0]["effect"], "friction-law");
+    EXPECT_EQ(j["steps"][0]["parameters"]["replacementLaw"], "plastic");
+    EXPECT_LE(j["gapAfter"].get<double>(), 0.5 * j["gapBefore"].get<double>());
+}
+
 TEST_F(DiscoverCli, NothingHiddenNamesNothing)
 {
     makeDataset({"none"}, "4", "none");

@@ -300,10 +300,10 @@ TEST_F(SynthDataCli, BadEffectNameListsTheValidNames)
 {
     const Result r = synth(tiny("junction-growht", "1", "ds"));
     EXPECT_EQ(r.status, 1);
-    EXPECT_NE(
-        r.err.find("--effect: expected one of none, junction-growth, breakaway-jump, hertz-contact, "
-                   "sticking-creep, extra-string-damping, ambient-temperature but got \"junction-growht\""),
-        std::string::npos)
+    EXPECT_NE(r.err.find("--effect: expected one of none, junction-growth, breakaway-jump, hertz-contact, "
+                         "sticking-creep, extra-string-damping, ambient-temperature, friction-law but got "
+                         "\"junction-growht\""),
+              std::string::npos)
         << r.err;
     EXPECT_FALSE(fs::exists(path("ds")));
 }
@@ -337,7 +337,9 @@ TEST_F(SynthDataCli, BadValuesNameTheOptionAndWriteNothing)
           Case{with({"--sample-rate", "44100.5"}), "--sample-rate"},
           Case{with({"--preset", "no-such-preset"}), "no-such-preset"},
           Case{with({"--generator", "independent", "--member", "-3"}),
-               "--member: expected an integer in 0..1000000"}})
+               "--member: expected an integer in 0..1000000"},
+          Case{tiny("friction-law:replacementLaw=classical", "1", "never", {"--generator", "independent"}),
+               "independent generator: models the plastic and viscous thermal laws only, not \"classical\""}})
     {
         const Result r = synth(c.args);
         EXPECT_EQ(r.status, 1) << c.message << "\n" << r.err;

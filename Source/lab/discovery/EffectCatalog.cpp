@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 #include "core/gesture/GestureLimits.h"
@@ -70,6 +71,15 @@ void extraStringDamping(SimulationModel& m, const std::vector<double>& v)
         m.lossScale *= v[0];
 }
 
+// The seeds' laws a candidate may put in the baseline's place, in the order of its choice. The modified law
+// is breakaway-jump's (its curves with no margin), so it is not repeated here.
+constexpr const char* kReplacementLaws[] = {"plastic", "viscous", "classical", "reconstructed"};
+
+void frictionLawSwap(SimulationModel& m, const std::vector<double>& v)
+{
+    m.preset.friction = kReplacementLaws[static_cast<std::size_t>(v[0])];
+}
+
 // Adds, for the same reason: the offset is relative to the rig's stated ambient.
 void ambientTemperature(SimulationModel& m, const std::vector<double>& v)
 {
@@ -77,24 +87,29 @@ void ambientTemperature(SimulationModel& m, const std::vector<double>& v)
 }
 
 // Each effect's null: the values at which its change leaves the model as it was.
-bool junctionGrowthNull(const std::vector<double>& v)
+bool junctionGrowthNull(const std::vector<double>& v, const SimulationModel&)
 {
     return v[0] == 0.0;
 }
 
-bool breakawayNull(const std::vector<double>& v)
+bool breakawayNull(const std::vector<double>& v, const SimulationModel&)
 {
     return v[0] == 2.0 && v[1] == 0.0; // no curve and no margin
 }
 
-bool extraStringDampingNull(const std::vector<double>& v)
+bool extraStringDampingNull(const std::vector<double>& v, const SimulationModel&)
 {
     return v[0] == 1.0;
 }
 
-bool ambientTemperatureNull(const std::vector<double>& v)
+bool ambientTemperatureNull(const std::vector<double>& v, const SimulationModel&)
 {
     return v[0] == 0.0;
+}
+
+bool frictionLawNull(const std::vector<double>& v, const SimulationModel& before)
+{
+    return before.preset.friction == kReplacementLaws[static_cast<std::size_t>(v[0])];
 }
 
 // A choice among `choices`: its range is the indices (0 .. choices - 1), so it cannot fall out of step with
@@ -177,6 +192,13 @@ std::vector<Effect> makeCatalog()
                                         .drawMax = 15.0,
                                         .signedDraw = true,
                                         .meaning = "rosin temperature at rest minus the stated ambient"};
+    // Drawn among the three that are not the default baseline, so a hidden law always changes the model.
+    EffectParameter replacementLaw =
+        choiceParameter("replacementLaw", {std::begin(kReplacementLaws), std::end(kReplacementLaws)},
+                        static_cast<double>(std::size(kReplacementLaws) - 1),
+                        "the law of the source texts in the baseline's place: the plastic or viscous thermal "
+                        "law, or the classical or reconstructed friction curve");
+    replacementLaw.drawMin = 1.0;
     return {
         {"junction-growth",
          "limiting static friction grows with the time spent sticking (contact ageing)",
@@ -220,6 +242,14 @@ std::vector<Effect> makeCatalog()
          {},
          nullptr,
          ambientTemperatureNull},
+        {"friction-law",
+         "another friction law of the source texts in the baseline's place",
+         "[Smith2000] eqs. 3, 4; [Galluzzo2017] eqs. 1, 2",
+         {replacementLaw},
+         frictionLawSwap,
+         {},
+         nullptr,
+         frictionLawNull},
     };
 }
 
@@ -270,9 +300,9 @@ std::vector<double> parameterValues(const Effect& effect, const std::vector<doub
                                                                  : searchValues;
 }
 
-bool isNull(const Effect& effect, const std::vector<double>& values)
+bool isNull(const Effect& effect, const std::vector<double>& values, const SimulationModel& before)
 {
-    return effect.atNull != nullptr && effect.atNull(values);
+    return effect.atNull != nullptr && effect.atNull(values, before);
 }
 
 void applyEffect(const Effect& effect, const std::vector<double>& values, SimulationModel& model)

@@ -36,6 +36,14 @@
 //                        Preset::ambientOffset. Parameter: ambientOffset (K). A colder rosin keeps its
 //                        ambient properties until the contact has warmed by |offset| (the calibration does
 //                        not extend below ambient).
+//   friction-law         another law of the three source texts in the baseline's place ([Woodhouse-thermal]
+//                        asks which law describes rosin; a dataset may answer with another than the
+//                        baseline's): the plastic or viscous thermal law ([Smith2000] eqs. 4, 3) or the
+//                        classical or reconstructed friction curve ([Galluzzo2017] eqs. 1, 2). Parameter:
+//                        replacementLaw, a choice; its null is the law the model already has. The modified
+//                        law is breakaway-jump's (a jump curve with no margin), so it is not a choice here.
+//                        Fitted like every effect, with the calibration's nuisance refitted within its
+//                        priors; the curves take none of the rosin's thermal constants.
 //
 // Parameter names are deliberately distinct words (no "eta", "tau"): a dataset must not name its hidden
 // effect, and tests check that by searching the dataset's files for every effect and parameter name.
@@ -62,11 +70,11 @@ struct Effect
     /// at a time, which crosses a valley lying diagonally to them without following it.
     std::vector<EffectParameter> searchParameters{};
     std::vector<double> (*fromSearch)(const std::vector<double>& searchValues) = nullptr;
-    /// True where `values` leave the model as it was, the effect absent (its null: no growth, no margin and
-    /// no curve, no extra loss, no offset); nullptr for an effect without one in its fit range (hertz
-    /// contact is a switch; the weakest creep still moves a bowed transient). A fit that ends at its null
-    /// explains nothing of its own: discover says so.
-    bool (*atNull)(const std::vector<double>& values) = nullptr;
+    /// True where `values` leave the model `before` them as it was, the effect absent (its null: no growth,
+    /// no margin and no curve, no extra loss, no offset, the law it already has); nullptr for an effect
+    /// without one in its fit range (hertz contact is a switch; the weakest creep still moves a bowed
+    /// transient). A fit that ends at its null explains nothing of its own: discover says so.
+    bool (*atNull)(const std::vector<double>& values, const SimulationModel& before) = nullptr;
 };
 
 /// The coordinates a fit of `effect` searches: searchParameters, or parameters where there are none.
@@ -74,10 +82,10 @@ const std::vector<EffectParameter>& fitCoordinates(const Effect& effect);
 /// The effect's parameter values at a point of its fit coordinates.
 std::vector<double> parameterValues(const Effect& effect, const std::vector<double>& searchValues);
 
-/// Whether `values` of `effect` are its null (Effect::atNull; false for an effect without one).
-bool isNull(const Effect& effect, const std::vector<double>& values);
+/// Whether `values` of `effect` leave `before` as it was (Effect::atNull; false for an effect without one).
+bool isNull(const Effect& effect, const std::vector<double>& values, const SimulationModel& before = {});
 
-/// The six effects, in the order they were specified (reports and tests list them so).
+/// The seven effects, in the order they were specified (reports and tests list them so).
 const std::vector<Effect>& effectCatalog();
 /// Their names, in that order.
 std::vector<std::string> effectNames();

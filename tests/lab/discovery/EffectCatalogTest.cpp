@@ -27,11 +27,11 @@ SimulationModel withEffect(const std::string& name, const std::vector<double>& v
     return model;
 }
 
-TEST(EffectCatalog, NamesTheSixEffectsInTheirOrder)
+TEST(EffectCatalog, NamesTheSevenEffectsInTheirOrder)
 {
-    EXPECT_EQ(effectNames(),
-              (std::vector<std::string>{"junction-growth", "breakaway-jump", "hertz-contact",
-                                        "sticking-creep", "extra-string-damping", "ambient-temperature"}));
+    EXPECT_EQ(effectNames(), (std::vector<std::string>{"junction-growth", "breakaway-jump", "hertz-contact",
+                                                       "sticking-creep", "extra-string-damping",
+                                                       "ambient-temperature", "friction-law"}));
     for (const auto& e : effectCatalog())
     {
         EXPECT_EQ(findEffect(e.name), &e);
@@ -51,7 +51,8 @@ TEST(EffectCatalog, ParametersHaveNamesUnitsAndRanges)
         {"hertz-contact", {}},
         {"sticking-creep", {"creepResistance"}},
         {"extra-string-damping", {"lossScale", "lossTerms"}},
-        {"ambient-temperature", {"ambientOffset"}}};
+        {"ambient-temperature", {"ambientOffset"}},
+        {"friction-law", {"replacementLaw"}}};
     std::set<std::string> all;
     for (const auto& e : effectCatalog())
     {
@@ -101,6 +102,29 @@ TEST(EffectCatalog, JunctionGrowthAgesTheVoicesStaticLimit)
     for (int k = 0; k < 882; ++k)
         law->solve({0.0, 1.0, 1.0});
     EXPECT_GT(law->staticCoefficient(1.0), aged); // and keeps growing with hold time
+}
+
+// Each choice builds that law of the source texts on the voice; synth-data hides one of the three that are
+// not the default baseline, and the law a model already has is the candidate's null.
+TEST(EffectCatalog, FrictionLawPutsAnotherLawOfTheSourcesInTheBaselinesPlace)
+{
+    const Effect& swap = *findEffect("friction-law");
+    const auto& choice = swap.parameters.front();
+    EXPECT_EQ(choice.choices, (std::vector<std::string>{"plastic", "viscous", "classical", "reconstructed"}));
+    EXPECT_EQ(choice.drawMin, 1.0);
+    EXPECT_EQ(choice.drawMax, 3.0);
+    for (std::size_t k = 0; k < choice.choices.size(); ++k)
+    {
+        const SimulationModel model = withEffect("friction-law", {static_cast<double>(k)});
+        EXPECT_EQ(model.preset.friction, choice.choices[k]);
+        EXPECT_EQ(frictionLaw(model)->name(), choice.choices[k]);
+    }
+    EXPECT_TRUE(isNull(swap, {0}));
+    EXPECT_FALSE(isNull(swap, {1}));
+    SimulationModel classical;
+    classical.preset.friction = "classical";
+    EXPECT_TRUE(isNull(swap, {2}, classical));
+    EXPECT_FALSE(isNull(swap, {0}, classical));
 }
 
 TEST(EffectCatalog, BreakawayJumpSwitchesToTheModifiedThermalLaw)
@@ -225,6 +249,7 @@ TEST(EffectCatalog, AnEffectAtItsNullBowsAsTheBaselineDoes)
         {"breakaway-jump", {2, 0.0}, {2, 0.01}},
         {"extra-string-damping", {1.0, 0.0}, {1.05, 0.0}},
         {"ambient-temperature", {0.0}, {0.5}},
+        {"friction-law", {0}, {1}},
     };
     for (const auto& [name, null, off] : cases)
     {

@@ -166,7 +166,7 @@ FoldScore fitAndScore(const SearchInputs& in, const CurrentModel& current,
     f.after = objectiveShares(in.heldOut, in.measured, sim, in.scatter, current.heldOut);
     // Along the fitted model's change to the current one (the effect with the nuisance refitted with it). A
     // fit at its null changes only the nuisance: nothing of the effect's to test.
-    if (!isNull(effect, f.values))
+    if (!isNull(effect, f.values, current.start))
         f.signature = signatureScore(in.heldOut, *in.grid, in.measured, current.heldOut, sim, in.scatter);
     return f;
 }
@@ -210,7 +210,7 @@ EffectScore scoreByTests(const SearchInputs& in, const CurrentModel& current,
     const Evidence one = evidenceOf({&a}, seed);
     s.heldOutGain = one.gain;
     s.pValue = one.pValue;
-    s.leftNull = !isNull(effect, s.values);
+    s.leftNull = !isNull(effect, s.values, current.start);
     s.significant = s.leftNull && one.pValue < kHalfDecides * alpha && one.gain >= kMinRelativeGain;
     if (!s.leftNull || s.significant || !(one.pValue < kCrossFitScreenP && one.gain >= kCrossFitScreenGain))
         return s;

@@ -5,9 +5,57 @@
 namespace rosin::discovery
 {
 
-ContactFriction::ContactFriction(const YieldStressTable& table, double area, const OwnEffects& effects,
-                                 double dt)
-    : table_(table), area_(area), effects_(effects), dt_(dt)
+namespace
+{
+// The root of `residual` in [0, hi], where it is negative at 0 and positive at hi: the Illinois method
+// [DowellJarratt1971].
+template <class Residual> double bracketedRoot(const Residual& residual, double hi)
+{
+    double lo = 0.0;
+    double rlo = residual(lo), rhi = residual(hi);
+    int side = 0;
+    for (int i = 0; i < 60 && hi - lo > 1e-13 * (1.0 + hi); ++i)
+    {
+        const double F = (lo * rhi - hi * rlo) / (rhi - rlo);
+        const double r = residual(F);
+        if ((r < 0.0) == (rlo < 0.0))
+        {
+            lo = F;
+            rlo = r;
+            if (side == -1)
+                rhi *= 0.5; // Illinois: halve the stale end so the bracket keeps shrinking on both sides
+            side = -1;
+        }
+        else
+        {
+            hi = F;
+            rhi = r;
+            if (side == 1)
+                rlo *= 0.5;
+            side = 1;
+        }
+        if (r == 0.0)
+            lo = hi = F;
+    }
+    return 0.5 * (lo + hi);
+}
+
+FrictionSolution sliding(double dvh, double Y, double F)
+{
+    const double x = std::abs(dvh);
+    const double sign = dvh > 0.0 ? -1.0 : 1.0;
+    FrictionSolution s;
+    s.force = sign * F;
+    s.slip = -sign * (x - Y * F);
+    s.power = F * (x - Y * F);
+    s.sticking = false;
+    return s;
+}
+} // namespace
+
+ContactFriction::ContactFriction(const YieldStressTable& table, double area, double layer,
+                                 const OwnEffects& effects, double dt)
+    : table_(table), area_(area), layer_(layer), effects_(effects), dt_(dt)
 {
 }
 
@@ -28,6 +76,8 @@ double ContactFriction::staticLimit(double T) const noexcept
 
 FrictionSolution ContactFriction::solve(double dvh, double Y, const ContactHeat::Prediction& heat) noexcept
 {
+    if (effects_.viscous)
+        return slideViscous(dvh, Y, heat);
     const double holding = std::abs(dvh) / Y; // force that keeps dv = 0
     const double limit = staticLimit(heat.free);
     const double sign = dvh > 0.0 ? -1.0 : 1.0; // friction opposes the history slip
@@ -56,39 +106,21 @@ FrictionSolution ContactFriction::slide(double dvh, double Y, const ContactHeat:
 {
     const double x = std::abs(dvh);
     auto residual = [&](double F) { return F - plastic(heat.at(F * (x - Y * F))); };
-    double lo = 0.0, hi = x / Y;
-    double rlo = residual(lo), rhi = residual(hi);
-    int side = 0;
-    for (int i = 0; i < 60 && hi - lo > 1e-13 * (1.0 + hi); ++i)
+    return sliding(dvh, Y, bracketedRoot(residual, x / Y));
+}
+
+FrictionSolution ContactFriction::slideViscous(double dvh, double Y,
+                                               const ContactHeat::Prediction& heat) const
+{
+    const double x = std::abs(dvh);
+    const double c = area_ / layer_;
+    auto residual = [&](double F)
     {
-        const double F = (lo * rhi - hi * rlo) / (rhi - rlo);
-        const double r = residual(F);
-        if ((r < 0.0) == (rlo < 0.0))
-        {
-            lo = F;
-            rlo = r;
-            if (side == -1)
-                rhi *= 0.5; // Illinois: halve the stale end so the bracket keeps shrinking on both sides
-            side = -1;
-        }
-        else
-        {
-            hi = F;
-            rhi = r;
-            if (side == 1)
-                rlo *= 0.5;
-            side = 1;
-        }
-        if (r == 0.0)
-            lo = hi = F;
-    }
-    const double F = 0.5 * (lo + hi);
-    const double sign = dvh > 0.0 ? -1.0 : 1.0;
-    FrictionSolution s;
-    s.force = sign * F;
-    s.slip = -sign * (x - Y * F);
-    s.power = F * (x - Y * F);
-    s.sticking = false;
+        const double slip = x - Y * F;
+        return F - c * table_.viscosity(heat.at(F * slip) + effects_.ambientOffset) * slip;
+    };
+    FrictionSolution s = sliding(dvh, Y, bracketedRoot(residual, x / Y));
+    s.sticking = std::abs(s.slip) < 1e-4; // a label for the trace only, as for a creeping contact
     return s;
 }
 

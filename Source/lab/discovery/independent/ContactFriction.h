@@ -10,6 +10,8 @@
 //   slide  otherwise, at |f| = A tau_y(T(P)) with P = |f| |dv| and T(P) = free + P / pivot from the heat
 //          step: one unknown |f| in [0, |dv_h| / Y], bracketed (the residual is negative at 0 and positive at
 //          the sticking force), solved by the Illinois method [DowellJarratt1971].
+// With the viscous law (OwnEffects::viscous) there is no stick: the contact always slides, at
+// |f| = A eta(T(P)) |dv| / layer with dv on the load line, the same bracket and the same solve.
 #include "lab/discovery/independent/ContactHeat.h"
 #include "lab/discovery/independent/OwnEffects.h"
 #include "lab/discovery/independent/YieldStressTable.h"
@@ -28,8 +30,9 @@ struct FrictionSolution
 class ContactFriction
 {
   public:
-    /// `area`: the contact area at this trial's bow force (m^2).
-    ContactFriction(const YieldStressTable& table, double area, const OwnEffects& effects, double dt);
+    /// `area`: the contact area at this trial's bow force (m^2); `layer`: the bowing rig's rosin layer (m).
+    ContactFriction(const YieldStressTable& table, double area, double layer, const OwnEffects& effects,
+                    double dt);
 
     FrictionSolution solve(double historySlip, double admittance,
                            const ContactHeat::Prediction& heat) noexcept;
@@ -42,8 +45,11 @@ class ContactFriction
 
   private:
     FrictionSolution slide(double historySlip, double admittance, const ContactHeat::Prediction& heat) const;
+    FrictionSolution slideViscous(double historySlip, double admittance,
+                                  const ContactHeat::Prediction& heat) const;
     const YieldStressTable& table_;
     double area_;
+    double layer_;
     OwnEffects effects_;
     double dt_;
     double holdTime_ = 0.0;

@@ -45,10 +45,12 @@ IndependentRig rigFromPlan(const SynthPlan& plan, const Nuisance& nuisance, cons
     if (p.rig)
         throw std::invalid_argument("independent generator: models a bowed string, not an oscillator rig");
     // The catalog's breakaway effect swaps the plan's law for the modified one; this generator keeps the
-    // plastic law and adds its own breakaway instead.
-    if (p.friction != "plastic" && !hidesBreakaway(plan))
-        throw std::invalid_argument("independent generator: models the plastic thermal law only, not \"" +
-                                    p.friction + "\"");
+    // plastic law and adds its own breakaway instead. Its viscous law is its own (OwnEffects::viscous).
+    if (p.friction != "plastic" && p.friction != "viscous" && !hidesBreakaway(plan))
+        throw std::invalid_argument(
+            "independent generator: models the plastic and viscous thermal laws only, "
+            "not \"" +
+            p.friction + "\"");
     IndependentRig rig;
     rig.string = member.torsionOf(nuisance.apply(plan.dataset.rig.string));
     rig.member = member;
@@ -115,7 +117,7 @@ const TrialTrace& IndependentTrialSimulator::run(const TrialSettings& settings)
     WaveguideString string(waveguide(settings.beta));
     const HeatGrid grid{rig_.member.heatSurfaceCell, rig_.member.heatGridGrowth, rig_.member.advectionWidth};
     ContactHeat heat(std::sqrt(area / std::numbers::pi), rig_.layerThickness, rig_.materials, dt, grid);
-    ContactFriction friction(table_, area, rig_.effects, dt);
+    ContactFriction friction(table_, area, rig_.layerThickness, rig_.effects, dt);
 
     const auto n = static_cast<std::size_t>(std::llround(settings.seconds * rate_));
     trace_ = TrialTrace{};

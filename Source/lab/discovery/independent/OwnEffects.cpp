@@ -62,6 +62,7 @@ OwnEffects drawOwnEffects(const SynthPlan& plan)
         drawOne(hidden.effect->name, r, e);
     }
     e.ambientOffset = plan.model.preset.ambientOffset;
+    e.viscous = plan.model.preset.friction == "viscous";
     return e;
 }
 
@@ -85,6 +86,8 @@ std::vector<std::pair<std::string, double>> OwnEffects::values() const
         v.push_back({"extra-string-damping.bendingLossFactor", bendingLossFactor});
     if (ambientOffset != 0.0)
         v.push_back({"ambient-temperature.offset", ambientOffset});
+    if (viscous)
+        v.push_back({"friction-law.viscous", 1.0});
     return v;
 }
 

@@ -16,11 +16,14 @@
 //                        in series from zero force)
 //   extra-string-damping either a frequency-independent extra 1/Q, or only the bending (high-frequency)
 //                        term of the loss law raised              (catalog: every mode's loss x a factor)
+//   friction-law         the plan's law: viscous, as this generator's own viscous law (ContactFriction.h,
+//                        its viscosity read from its own calibration table); the friction curves are not
+//                        simulated here                    (catalog: Rosin's ViscousThermalLaw)
 //   ambient-temperature  the rosin starts at the plan's offset; below ambient the yield stress rises along
 //                        the table's own slope (YieldStressTable) (catalog: holds the ambient value)
 //
-// Own-form values are drawn from the dataset's seed (their own stream per effect), except the ambient offset,
-// which is the same physical quantity as the catalog's and is taken from the plan.
+// Own-form values are drawn from the dataset's seed (their own stream per effect), except the ambient offset
+// and the law, which are the same physical choices as the catalog's and are taken from the plan.
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -45,6 +48,7 @@ struct OwnEffects
     double extraEta = 0.0;            ///< extra frequency-independent 1/Q
     double bendingLossFactor = 1.0;   ///< factor on the loss law's bending term
     double ambientOffset = 0.0;       ///< K
+    bool viscous = false;             ///< the viscous thermal law in place of the plastic one
 
     /// The drawn values as key/value pairs ("junction-growth.gain", 0.41), for the truth file.
     std::vector<std::pair<std::string, double>> values() const;

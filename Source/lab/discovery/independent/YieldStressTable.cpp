@@ -39,6 +39,7 @@ YieldStressTable::YieldStressTable(const CalibrationContact& rig, const HeatMate
         speeds_.push_back(v);
         temperatures_.push_back(T);
         stresses_.push_back(rig.normalForce * mu / area);
+        logViscosities_.push_back(std::log(stresses_.back() * rig.layerThickness / v));
     }
     coldSlope_ = (stresses_.front() - at(kColdSpan)) / kColdSpan;
 }
@@ -53,6 +54,18 @@ double YieldStressTable::at(double T) const noexcept
     const std::size_t i = static_cast<std::size_t>(it - temperatures_.begin());
     const double w = (T - temperatures_[i - 1]) / (temperatures_[i] - temperatures_[i - 1]);
     return stresses_[i - 1] + w * (stresses_[i] - stresses_[i - 1]);
+}
+
+double YieldStressTable::viscosity(double T) const noexcept
+{
+    if (T <= temperatures_[1])
+        return std::exp(logViscosities_.front());
+    if (T >= temperatures_.back())
+        return std::exp(logViscosities_.back());
+    const auto it = std::upper_bound(temperatures_.begin() + 1, temperatures_.end(), T);
+    const std::size_t i = static_cast<std::size_t>(it - temperatures_.begin()); // 2 .. size - 1
+    const double w = (T - temperatures_[i - 1]) / (temperatures_[i] - temperatures_[i - 1]);
+    return std::exp(logViscosities_[i - 2] + w * (logViscosities_[i - 1] - logViscosities_[i - 2]));
 }
 
 } // namespace rosin::discovery

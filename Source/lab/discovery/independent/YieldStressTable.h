@@ -12,6 +12,12 @@
 // Below the calibration's ambient (rosin colder than the rig's stated ambient) the table is extended
 // linearly with its mean slope over the first 5 K, capped at +25 %: cold rosin is harder ([Galluzzo2017]
 // §5.1).
+//
+// The same calibration read as a viscosity, for the viscous law ([Smith2000] eq. 3: friction = area x
+// eta(T) x slip / layer): at each steady speed eta(T_ss(v)) = tau_y(T_ss(v)) x layer / v, so the viscous law
+// slides steadily on the same classical curve. Below the table's slowest speed (1e-7 m/s, its coldest
+// point) and for rosin colder than ambient, eta is held at that point's value: a cold contact creeps at
+// about 1e-7 m/s, and there is no static friction.
 #include <vector>
 
 #include "lab/discovery/independent/ContactHeat.h"
@@ -36,13 +42,16 @@ class YieldStressTable
 
     /// tau_y (Pa) at a contact temperature T (K above the calibration's ambient).
     double at(double temperature) const noexcept;
+    /// eta (Pa s) at a contact temperature T (K above the calibration's ambient), log-linear in T.
+    double viscosity(double temperature) const noexcept;
     const std::vector<double>& temperatures() const noexcept { return temperatures_; }
     const std::vector<double>& speeds() const noexcept { return speeds_; }
     const std::vector<double>& stresses() const noexcept { return stresses_; }
 
   private:
     std::vector<double> speeds_, temperatures_, stresses_;
-    double coldSlope_ = 0.0; ///< Pa per K below ambient
+    std::vector<double> logViscosities_; ///< ln eta at temperatures_[1..]
+    double coldSlope_ = 0.0;             ///< Pa per K below ambient
 };
 
 } // namespace rosin::discovery

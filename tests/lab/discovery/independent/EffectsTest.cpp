@@ -131,6 +131,49 @@ TEST(OwnEffects, WarmRosinStartsAtTheCalibratedCoefficientOfItsTemperature)
     EXPECT_GT(c.force, 1.03 * base.force);
 }
 
+// The viscous law is the same calibration read as a viscosity ([Smith2000] eq. 3): steady sliding on the
+// calibration rig, at the steady temperature of the continuous heat model written out above, reproduces the
+// classical curve it was calibrated on.
+TEST(OwnEffects, ViscousLawSlidesSteadilyOnTheCalibrationCurve)
+{
+    const YieldStressTable table({500e-6, 3.0, 10e-6}, test::nominalRig().materials, 1.0 / test::kRate);
+    const double area = std::numbers::pi * 500e-6 * 500e-6;
+    for (double v : {1e-4, 1e-3, 1e-2, 0.1})
+    {
+        const double mu = area * table.viscosity(calibrationTemperature(v)) * v / 10e-6 / 3.0;
+        std::printf("viscous, steady sliding at %g m/s: mu %.4f (classical curve %.4f)\n", v, mu,
+                    classicalFriction(v));
+        EXPECT_NEAR(mu / classicalFriction(v), 1.0, 0.05);
+    }
+}
+
+// [Woodhouse-thermal] Fig. 4: a viscous layer has no sticking barrier. From rest the cold contact creeps
+// at once, at the rate its viscosity gives on the load line (slip = f layer / (A eta)), where the plastic
+// contact is stuck, and it never stops creeping.
+TEST(OwnEffects, ViscousLawCreepsFromRestWhereThePlasticLawSticks)
+{
+    OwnEffects e;
+    e.viscous = true;
+    const IndependentRig rig = test::nominalRig(e);
+    IndependentTrialSimulator viscousSim(rig, test::kRate), plasticSim(test::nominalRig(), test::kRate);
+    const TrialTrace viscous = viscousSim.run(test::guettler(kBeta, 1.0, 1.0, 0.3));
+    const TrialTrace plastic = plasticSim.run(test::guettler(kBeta, 1.0, 1.0, 0.3));
+    const YieldStressTable table(
+        {rig.calibration.radius, rig.calibration.normalForce, rig.calibration.layerThickness}, rig.materials,
+        1.0 / test::kRate);
+    const std::size_t k = test::firstSlip(plastic) / 2;
+    const double slip = viscous.bowPointVelocity[k] - viscous.bowVelocity[k];
+    const double expected = std::abs(viscous.frictionForce[k]) * rig.layerThickness /
+                            (viscousSim.contactArea(1.0) * table.viscosity(0.0));
+    std::printf("viscous creep halfway to the plastic first slip: %.3g m/s (load line: %.3g m/s); plastic "
+                "%.3g m/s\n",
+                std::abs(slip), expected, plastic.bowPointVelocity[k] - plastic.bowVelocity[k]);
+    EXPECT_NEAR(std::abs(slip) / expected, 1.0, 0.05);
+    EXPECT_EQ(plastic.bowPointVelocity[k] - plastic.bowVelocity[k], 0.0);
+    for (std::size_t i = 1; i < viscous.bowVelocity.size(); ++i)
+        ASSERT_NE(viscous.bowPointVelocity[i], viscous.bowVelocity[i]) << "stuck at sample " << i;
+}
+
 TEST(OwnEffects, BendingLossFactorOnlyDampsHighPartials)
 {
     const auto s = physics::stringFromCatalogue("cello-D3");
