@@ -146,7 +146,8 @@ std::vector<Effect> makeCatalog()
                                     .meaning = "hold time at which ageing sets in"};
     // To 1, not further: the fit's grid (4 points) then lies at thirds, and a gain of about 0.3 has a point
     // of its own. Over 0..2 the first point off the null was 0.67, the grid's best for a hidden saturating
-    // gain of 0.28-0.33 stayed at the null, and the fit never left it (tuning members 33 and 37). The
+    // gain of 0.33 stayed at the null, and the fit never left it (tuning member 37; on member 33, a gain of
+    // 0.28 reached only after a 25 ms onset, it still does not). The
     // literature's ageing is weaker still ([Notes §8.2]: beta_a 0.01-0.02, a gain of at most ~0.1 at 50 ms);
     // synth-data's draws reach 0.98.
     const EffectParameter gainAtReferenceHold{.name = "gainAfter50ms",

@@ -48,9 +48,8 @@ IndependentRig rigFromPlan(const SynthPlan& plan, const Nuisance& nuisance, cons
     // plastic law and adds its own breakaway instead. Its viscous law is its own (OwnEffects::viscous).
     if (p.friction != "plastic" && p.friction != "viscous" && !hidesBreakaway(plan))
         throw std::invalid_argument(
-            "independent generator: models the plastic and viscous thermal laws only, "
-            "not \"" +
-            p.friction + "\"");
+            "independent generator: models the plastic and viscous thermal laws only, not \"" + p.friction +
+            "\"");
     IndependentRig rig;
     rig.string = member.torsionOf(nuisance.apply(plan.dataset.rig.string));
     rig.member = member;
